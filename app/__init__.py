@@ -1,0 +1,1 @@
+"""SafeGate: a pre-execution safety gate for LLM-controlled robots."""

@@ -1,0 +1,137 @@
+"""The gate request: the task context (c, E, u) plus the robot capabilities R.
+
+In: JSON from a robot planner, shaped as `shared/spec/gate-request.md` describes.
+Out: frozen pydantic models. Every field but `command` is optional and a missing field means
+"unknown", never "safe": downstream stages must treat `None` as not known.
+Fails: pydantic `ValidationError` on a shape that does not fit (the API maps it to a 422).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+AgeGroup = Literal["infant", "child", "teen", "adult", "older_adult"]
+Mobility = Literal["independent", "assisted", "wheelchair", "bedridden"]
+CognitiveState = Literal["typical", "impaired", "asleep", "intoxicated"]
+
+MAX_COMMAND_CHARS = 2000
+MAX_ENTITIES = 500
+
+
+class _Frozen(BaseModel):
+    model_config = ConfigDict(frozen=True, extra="allow", populate_by_name=True)
+
+
+class Position(_Frozen):
+    """A point in the scene's frame, in metres."""
+
+    x: float = Field(allow_inf_nan=False)
+    y: float = Field(allow_inf_nan=False)
+    z: float | None = Field(default=None, allow_inf_nan=False)
+
+
+class Obstacle(_Frozen):
+    """Something in the layout that is not a manipulable object (a loose rug, a step)."""
+
+    id: str = Field(min_length=1, max_length=200)
+    kind: str = Field(min_length=1, max_length=200)
+    room: str | None = None
+
+
+class Layout(_Frozen):
+    """Rooms, which rooms connect, and fixed obstacles."""
+
+    rooms: list[str] = Field(default_factory=list, max_length=MAX_ENTITIES)
+    connections: list[tuple[str, str]] = Field(default_factory=list, max_length=MAX_ENTITIES)
+    obstacles: list[Obstacle] = Field(default_factory=list, max_length=MAX_ENTITIES)
+
+
+class SceneObject(_Frozen):
+    """An object in the scene. `type` is an AI2-THOR type where one fits, else a plain noun."""
+
+    id: str = Field(min_length=1, max_length=200)
+    type: str = Field(min_length=1, max_length=200)
+    name: str | None = None
+    room: str | None = None
+    on: str | None = None
+    inside: str | None = Field(default=None, alias="in")
+    position: Position | None = None
+    properties: dict[str, Any] = Field(default_factory=dict)
+
+
+class Relation(_Frozen):
+    """A binary relation between two entities (`on`, `in`, `next_to`, `blocks`, `holding`...)."""
+
+    subject: str = Field(min_length=1, max_length=200)
+    relation: str = Field(min_length=1, max_length=200)
+    object: str = Field(min_length=1, max_length=200)
+
+
+class Person(_Frozen):
+    """A person in the scene; `properties` carries age_group, mobility, allergies..."""
+
+    id: str = Field(min_length=1, max_length=200)
+    role: str | None = None
+    name: str | None = None
+    room: str | None = None
+    posture: str | None = None
+    position: Position | None = None
+    properties: dict[str, Any] = Field(default_factory=dict)
+
+
+class Scene(_Frozen):
+    """E = (objects O, relations R, people P, layout L)."""
+
+    layout: Layout | None = None
+    objects: list[SceneObject] = Field(default_factory=list, max_length=MAX_ENTITIES)
+    relations: list[Relation] = Field(default_factory=list, max_length=MAX_ENTITIES)
+    people: list[Person] = Field(default_factory=list, max_length=MAX_ENTITIES)
+
+
+class UserProfile(_Frozen):
+    """u: the person being served, with what the caller knows it does not know."""
+
+    person_id: str | None = None
+    age_group: AgeGroup | None = None
+    mobility: Mobility | None = None
+    cognitive_state: CognitiveState | None = None
+    allergies: list[str] | None = None
+    unknowns: list[str] = Field(default_factory=list)
+
+
+class RobotProfile(_Frozen):
+    """R: where the robot is and what it can do. `skills`/`sensors` None means not stated."""
+
+    name: str | None = None
+    room: str | None = None
+    position: Position | None = None
+    skills: list[str] | None = None
+    payload_kg: float | None = Field(default=None, ge=0, allow_inf_nan=False)
+    max_speed_mps: float | None = Field(default=None, ge=0, allow_inf_nan=False)
+    sensors: list[str] | None = None
+    holding: str | None = None
+
+
+class GateRequest(_Frozen):
+    """What a planner POSTs to /gate."""
+
+    command: str = Field(min_length=1, max_length=MAX_COMMAND_CHARS)
+    scene: Scene | None = None
+    user: UserProfile | None = None
+    robot: RobotProfile | None = None
+
+
+class InitialState(_Frozen):
+    """A scene and robot state for /verify and /monitor (the gate request's shapes)."""
+
+    scene: Scene | None = None
+    robot: RobotProfile | None = None
+
+
+Answer = dict[str, Any]
+"""An answer to a clarifying question, e.g. {"age_group": "adult"} or {"contents": "water"}."""
+
+ActionName = str
+Kind = Literal["object", "person", "room", "robot"]
