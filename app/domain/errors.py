@@ -8,6 +8,7 @@ SafeGateError
 ├── NotFound                a request, template, contract or session id that does not exist (404)
 ├── Conflict                the operation is refused in the current state (409)
 │   └── AttemptsExhausted   a contract has used up its verification attempts
+├── Unauthorized            no valid API key where one is required (401)
 ├── Forbidden               the caller's key lacks the role (403)
 └── Unavailable             a dependency failed: database, solver, LLM (503); never an authorize
 
@@ -73,6 +74,10 @@ class Conflict(SafeGateError):
 
 class AttemptsExhausted(Conflict):
     title = "Verification attempts exhausted"
+
+
+class Unauthorized(SafeGateError):
+    title = "Unauthorized"
 
 
 class Forbidden(SafeGateError):

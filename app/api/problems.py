@@ -1,0 +1,98 @@
+"""RFC 9457 problem+json: the one place where errors become HTTP answers.
+
+In: exceptions from the domain tree (`app.domain.errors`), request validation errors, and anything
+unexpected. Out: `application/problem+json` bodies with `type`, `title`, `status`, `detail` and,
+for invalid input, `errors`: each with the offending field's path (e.g. `body.scene.objects.0.id`),
+and where known a line/column or plan step. Unexpected exceptions are 500s with no internals.
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from fastapi.responses import JSONResponse
+from starlette.exceptions import HTTPException as StarletteHTTPException
+
+from app.domain import errors
+
+PROBLEM_JSON = "application/problem+json"
+_log = logging.getLogger("safegate.problems")
+
+_STATUS: list[tuple[type[errors.SafeGateError], int]] = [
+    (errors.InvalidInput, 422),
+    (errors.NotFound, 404),
+    (errors.Conflict, 409),
+    (errors.Forbidden, 403),
+    (errors.Unauthorized, 401),
+    (errors.Unavailable, 503),
+]
+
+
+def problem(
+    status: int, title: str, detail: str, *, type_: str = "about:blank", **extra: Any
+) -> JSONResponse:
+    """Build a problem+json response."""
+    body: dict[str, Any] = {"type": type_, "title": title, "status": status, "detail": detail}
+    body.update({k: v for k, v in extra.items() if v is not None})
+    return JSONResponse(body, status_code=status, media_type=PROBLEM_JSON)
+
+
+def status_for(error: errors.SafeGateError) -> int:
+    for cls, status in _STATUS:
+        if isinstance(error, cls):
+            return status
+    return 500
+
+
+def _slug(error: errors.SafeGateError) -> str:
+    return "https://safegate.dev/problems/" + type(error).__name__.lower()
+
+
+async def _domain_error(_: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, errors.SafeGateError)
+    status = status_for(exc)
+    extra: dict[str, Any] = dict(exc.extra)
+    if exc.field is not None:
+        extra["errors"] = [{"field": exc.field, "message": exc.detail, **exc.extra}]
+    return problem(status, exc.title, exc.detail, type_=_slug(exc), **extra)
+
+
+async def _validation_error(_: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, RequestValidationError)
+    problems = [
+        {
+            "field": ".".join(str(part) for part in item.get("loc", ())),
+            "message": item.get("msg", "invalid"),
+            "type": item.get("type", "value_error"),
+        }
+        for item in exc.errors()
+    ]
+    fields = ", ".join(p["field"] for p in problems[:5])
+    return problem(
+        422,
+        "Invalid request",
+        f"the request does not fit the expected shape at: {fields}",
+        type_="https://safegate.dev/problems/validation",
+        errors=problems,
+    )
+
+
+async def _http_error(_: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, StarletteHTTPException)
+    return problem(exc.status_code, str(exc.detail), str(exc.detail))
+
+
+async def _unexpected(_: Request, exc: Exception) -> JSONResponse:
+    _log.exception("unhandled error", exc_info=exc)
+    return problem(500, "Internal error", "SafeGate could not process this request")
+
+
+def install(app: FastAPI) -> None:
+    """Register the handlers on an app."""
+    app.add_exception_handler(errors.SafeGateError, _domain_error)
+    app.add_exception_handler(RequestValidationError, _validation_error)
+    app.add_exception_handler(StarletteHTTPException, _http_error)
+    app.add_exception_handler(Exception, _unexpected)

@@ -1,0 +1,208 @@
+"""API models (`XRequest`/`XResponse`) and the mapping from domain results to them.
+
+The gate's answer follows `shared/spec/gate-request.md`; fields are only ever added, never renamed.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from app.domain.binding import BindingResult
+from app.domain.contracts import Contract, ContractCondition, planner_constraints
+from app.domain.models import HazardProposal, UnknownFact
+from app.services import GateRecord
+
+
+class HazardOut(BaseModel):
+    level: str
+    category: str
+    hazard_class: str
+    mechanism: str
+    severity: str
+    preventability: str
+    confidence: str
+    template_id: str | None
+    template_ids: list[str] = Field(default_factory=list)
+    bindings: dict[str, Any]
+    unbound_reason: str | None = None
+
+
+class UnknownOut(BaseModel):
+    attribute: str
+    description: str
+    critical: bool
+    why: str
+    entity: str | None = None
+
+
+class GateResponse(BaseModel):
+    """The answer to POST /gate."""
+
+    request_id: str
+    decision: str
+    rule: str
+    defer_kind: str | None
+    question: str | None
+    reason: str
+    hazards: list[HazardOut]
+    unknowns: list[UnknownOut]
+    triggers: list[str]
+    contract_id: str | None
+    analyzer: str
+    parent_request_id: str | None = None
+    timings_ms: dict[str, float] = Field(default_factory=dict)
+    suggested_templates: list[dict[str, Any]] = Field(default_factory=list)
+
+
+def _hazard_key(proposal: HazardProposal) -> str:
+    return f"{proposal.hazard_class}:{sorted(proposal.entities.items())}"
+
+
+def hazards_out(binding: BindingResult) -> list[HazardOut]:
+    out: list[HazardOut] = []
+    for bound in binding.bound:
+        first = bound.matches[0]
+        out.append(
+            _hazard(
+                bound.proposal,
+                template_id=first.template.id,
+                template_ids=[m.template.id for m in bound.matches],
+                bindings=dict(first.bindings),
+            )
+        )
+    for unbound in binding.unbound:
+        out.append(
+            _hazard(
+                unbound.proposal,
+                template_id=None,
+                template_ids=[],
+                bindings=dict(unbound.proposal.entities),
+                unbound_reason=unbound.reason,
+            )
+        )
+    return out
+
+
+def _hazard(proposal: HazardProposal, **extra: Any) -> HazardOut:
+    return HazardOut(
+        level=proposal.level.value,
+        category=proposal.category.value,
+        hazard_class=proposal.hazard_class,
+        mechanism=proposal.mechanism,
+        severity=proposal.severity.value,
+        preventability=proposal.preventability.value,
+        confidence=proposal.confidence.value,
+        **extra,
+    )
+
+
+def unknown_out(unknown: UnknownFact) -> UnknownOut:
+    return UnknownOut(
+        attribute=unknown.attribute,
+        description=unknown.description,
+        critical=unknown.critical,
+        why=unknown.why,
+        entity=unknown.entity,
+    )
+
+
+def suggested_template(proposal: HazardProposal) -> dict[str, Any]:
+    """A template skeleton a curator can start from for an unbound hazard."""
+    return {
+        "id": f"{proposal.category.value}.{proposal.hazard_class}",
+        "name": proposal.hazard_class.replace("_", " ").capitalize(),
+        "category": proposal.category.value,
+        "hazard_class": proposal.hazard_class,
+        "description": proposal.mechanism,
+        "severity": proposal.severity.value,
+        "preventability": proposal.preventability.value,
+        "variables": [{"name": name, "type": "entity"} for name in sorted(proposal.entities)],
+        "invariants": [],
+        "guards": [],
+        "aborts": [],
+    }
+
+
+def gate_response(record: GateRecord) -> GateResponse:
+    result = record.result
+    decision = result.decision
+    triggers = [f"{h.hazard_class}: {h.mechanism}" for h in decision.trigger_hazards] + [
+        f"unknown {u.attribute}: {u.description}" for u in decision.trigger_unknowns
+    ]
+    suggestions = [
+        suggested_template(u.proposal)
+        for u in result.binding.unbound
+        if decision.defer_kind is not None and decision.defer_kind.value == "extend_library"
+    ]
+    return GateResponse(
+        request_id=record.request_id,
+        decision=decision.decision.value,
+        rule=decision.rule.value,
+        defer_kind=decision.defer_kind.value if decision.defer_kind else None,
+        question=decision.question,
+        reason=decision.reason,
+        hazards=hazards_out(result.binding),
+        unknowns=[unknown_out(u) for u in result.report.unknowns],
+        triggers=triggers,
+        contract_id=record.contract_id,
+        analyzer=result.report.analyzer,
+        parent_request_id=record.parent_request_id,
+        timings_ms={k: round(v, 3) for k, v in result.timings_ms.items()},
+        suggested_templates=suggestions,
+    )
+
+
+class ContractConditionOut(BaseModel):
+    model_config = ConfigDict(from_attributes=True)
+
+    id: str
+    kind: str
+    formula: str
+    description: str
+    action: str | None
+    template_id: str
+    template_version: int
+    bindings: dict[str, Any]
+
+
+class ContractResponse(BaseModel):
+    contract_id: str
+    request_id: str | None
+    invariants: list[ContractConditionOut]
+    guards: list[ContractConditionOut]
+    aborts: list[ContractConditionOut]
+    template_versions: dict[str, int]
+    planner_constraints: list[str]
+    attempts_used: int = 0
+    attempts_left: int | None = None
+    status: str = "active"
+
+
+def _condition(condition: ContractCondition) -> ContractConditionOut:
+    return ContractConditionOut(
+        id=condition.id,
+        kind=condition.kind.value,
+        formula=condition.formula,
+        description=condition.description,
+        action=condition.action,
+        template_id=condition.template_id,
+        template_version=condition.template_version,
+        bindings=dict(condition.bindings),
+    )
+
+
+def contract_response(contract_id: str, contract: Contract, meta: dict[str, Any]) -> ContractResponse:
+    return ContractResponse(
+        contract_id=contract_id,
+        request_id=meta.get("request_id"),
+        invariants=[_condition(c) for c in contract.invariants],
+        guards=[_condition(c) for c in contract.guards],
+        aborts=[_condition(c) for c in contract.aborts],
+        template_versions=dict(contract.template_versions),
+        planner_constraints=planner_constraints(contract),
+        attempts_used=int(meta.get("attempts_used", 0)),
+        attempts_left=meta.get("attempts_left"),
+        status=str(meta.get("status", "active")),
+    )

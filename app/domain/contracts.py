@@ -1,0 +1,165 @@
+"""Stage 4, Contract Compilation: the Task Safety Contract of an authorized task.
+
+In: the bound hazards from Stage 2. Out: a `Contract` = (invariants, guards, aborts): the union of
+the matched templates' conditions with their variables substituted on the parsed formulas (not by
+text replacement), defaults filled, deduplicated by (condition id, bindings), and every formula
+type-checked against the vocabulary after substitution. It also renders the contract as plain
+planning constraints, so a planner can be told the rules before it writes a plan.
+Fails: `FormulaError` if a template's condition does not parse or check (a library defect: the
+gate must not authorize on it).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+
+from pydantic import BaseModel, ConfigDict
+
+from app.domain.binding import BindingValue, BoundHazard, BoundTemplate
+from app.domain.formula import EntityRef, check, parse, render, substitute
+from app.domain.models import ConditionKind, TemplateCondition, VariableType
+
+_ENTITY_TYPES = {"object", "person", "room", "robot", "entity"}
+
+
+class ContractCondition(BaseModel):
+    """One bound condition of a contract."""
+
+    model_config = ConfigDict(frozen=True)
+
+    id: str
+    kind: ConditionKind
+    formula: str
+    description: str
+    action: str | None = None
+    template_id: str
+    template_version: int
+    bindings: dict[str, BindingValue]
+
+
+class Contract(BaseModel):
+    """A Task Safety Contract: what must always hold, what must hold before which action, and
+    what halts execution at once."""
+
+    model_config = ConfigDict(frozen=True)
+
+    invariants: tuple[ContractCondition, ...] = ()
+    guards: tuple[ContractCondition, ...] = ()
+    aborts: tuple[ContractCondition, ...] = ()
+    template_versions: dict[str, int] = {}
+
+    @property
+    def conditions(self) -> tuple[ContractCondition, ...]:
+        return (*self.invariants, *self.guards, *self.aborts)
+
+    def __len__(self) -> int:
+        return len(self.invariants) + len(self.guards) + len(self.aborts)
+
+
+def compile_contract(bound: Iterable[BoundHazard]) -> Contract:
+    """Compile the contract for an authorized task from its bound hazards.
+
+    Args:
+        bound: every bound hazard with its matched templates.
+
+    Returns:
+        The deduplicated, type-checked contract.
+
+    Raises:
+        FormulaError: a template condition does not parse or type-check once bound.
+    """
+    by_kind: dict[ConditionKind, dict[tuple[str, str], ContractCondition]] = {
+        kind: {} for kind in ConditionKind
+    }
+    versions: dict[str, int] = {}
+    for hazard in bound:
+        for match in hazard.matches:
+            versions[match.template.id] = match.template.version
+            for kind, condition in match.template.conditions():
+                compiled = _bind_condition(match, kind, condition)
+                key = (compiled.id, render_bindings(compiled.bindings))
+                by_kind[kind].setdefault(key, compiled)
+    return Contract(
+        invariants=tuple(by_kind[ConditionKind.INVARIANT].values()),
+        guards=tuple(by_kind[ConditionKind.GUARD].values()),
+        aborts=tuple(by_kind[ConditionKind.ABORT].values()),
+        template_versions=versions,
+    )
+
+
+def _bind_condition(
+    match: BoundTemplate, kind: ConditionKind, condition: TemplateCondition
+) -> ContractCondition:
+    template = match.template
+    variable_types = {v.name: v.type.value for v in template.variables}
+    formula = parse(condition.formula)
+    check(formula, variable_types, allow_action_args=kind is ConditionKind.GUARD)
+    used = _used_bindings(condition.formula, match.bindings)
+    substituted = substitute(formula, _as_terms(used, variable_types))
+    check(substituted, {}, allow_action_args=kind is ConditionKind.GUARD)
+    return ContractCondition(
+        id=f"{template.id}.{condition.id}",
+        kind=kind,
+        formula=render(substituted),
+        description=condition.description,
+        action=condition.action,
+        template_id=template.id,
+        template_version=template.version,
+        bindings=used,
+    )
+
+
+def _used_bindings(
+    formula_text: str, bindings: Mapping[str, BindingValue]
+) -> dict[str, BindingValue]:
+    """Only the bindings the condition mentions, so the dedup key ignores irrelevant ones."""
+    return {
+        name: value
+        for name, value in bindings.items()
+        if re.search(rf"\${re.escape(name)}\b", formula_text)
+    }
+
+
+def _as_terms(
+    bindings: Mapping[str, BindingValue], variable_types: Mapping[str, str]
+) -> dict[str, object]:
+    terms: dict[str, object] = {}
+    for name, value in bindings.items():
+        if variable_types.get(name) in _ENTITY_TYPES and isinstance(value, str):
+            terms[name] = EntityRef(value)
+        elif variable_types.get(name) == VariableType.NUMBER.value and not isinstance(value, bool):
+            terms[name] = float(value)
+        else:
+            terms[name] = value
+    return terms
+
+
+def render_bindings(bindings: Mapping[str, BindingValue]) -> str:
+    """A stable text form of bindings, e.g. `obj=mug_1,person=person_1`."""
+    return ",".join(f"{k}={bindings[k]}" for k in sorted(bindings))
+
+
+def planner_constraints(contract: Contract) -> list[str]:
+    """The contract in plain words, one constraint a line, ready for a planner's prompt.
+
+    Args:
+        contract: a compiled contract.
+
+    Returns:
+        Sentences naming the concrete entities each condition is about.
+    """
+    lines: list[str] = []
+    for condition in contract.invariants:
+        lines.append(f"Always: {_sentence(condition)}")
+    for condition in contract.guards:
+        lines.append(f"Before every {condition.action}: {_sentence(condition)}")
+    for condition in contract.aborts:
+        lines.append(f"Stop at once if: {_sentence(condition)}")
+    return lines
+
+
+def _sentence(condition: ContractCondition) -> str:
+    about = ", ".join(f"{k} = {v}" for k, v in sorted(condition.bindings.items()))
+    text = condition.description.rstrip(".")
+    return f"{text} ({about}) [{condition.id}]" if about else f"{text} [{condition.id}]"
