@@ -1,0 +1,183 @@
+"""The abstract syntax of the condition language: small immutable nodes.
+
+In: built by `app.domain.formula.parser.parse` (or by hand in tests). Out: frozen, slotted
+dataclasses that compare by structure only: `line`/`column` (1-based, 0 when the node was built
+by code rather than parsed) are carried for error messages but excluded from equality and hashing,
+so a rendered and re-parsed formula equals the original. Nothing here fails.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True, slots=True)
+class BoolConst:
+    """`true` or `false`."""
+
+    value: bool
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class NumberLit:
+    """A number literal (always a float; a leading minus is folded in)."""
+
+    value: float
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class StringLit:
+    """A double-quoted string literal such as `"bleach"`."""
+
+    value: str
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class VarRef:
+    """A template variable `$name` (stored without the dollar)."""
+
+    name: str
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class ActionArg:
+    """A guarded action's argument, `@object` or `@target` (stored without the at sign)."""
+
+    name: str
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class RobotConst:
+    """The constant `robot`: the robot being gated (entity id `robot`)."""
+
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class EntityRef:
+    """An entity constant, `#mug_1` or `#"Mug|+01.2"`; also a binding value for `substitute`."""
+
+    id: str
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class BoundVar:
+    """A bare identifier: a variable bound by an enclosing quantifier."""
+
+    name: str
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Apply:
+    """A vocabulary predicate or function applied to arguments, `near(robot, $person)`."""
+
+    name: str
+    args: tuple[Formula, ...]
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Not:
+    """Logical negation."""
+
+    operand: Formula
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Neg:
+    """Arithmetic negation of a non-literal (a literal's minus is folded into the literal)."""
+
+    operand: Formula
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Logic:
+    """A binary connective: `op` is one of `and`, `or`, `->`, `<->`."""
+
+    op: str
+    left: Formula
+    right: Formula
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Compare:
+    """A comparison: `op` is one of `==`, `!=`, `<`, `<=`, `>`, `>=`."""
+
+    op: str
+    left: Formula
+    right: Formula
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Arith:
+    """Arithmetic over numbers: `op` is one of `+`, `-`, `*`, `/`."""
+
+    op: str
+    left: Formula
+    right: Formula
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Quantifier:
+    """`forall var: type . body` or `exists var: type . body` over a finite typed domain."""
+
+    kind: str
+    var: str
+    type: str
+    body: Formula
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+Formula = (
+    BoolConst | NumberLit | StringLit | VarRef | ActionArg | RobotConst | EntityRef | BoundVar
+    | Apply | Not | Neg | Logic | Compare | Arith | Quantifier
+)
+"""Any node: a whole condition is a Formula whose type is `bool`."""
+
+LOGIC_OPS = ("and", "or", "->", "<->")
+COMPARE_OPS = ("==", "!=", "<", "<=", ">", ">=")
+ARITH_OPS = ("+", "-", "*", "/")
+QUANTIFIER_KINDS = ("forall", "exists")
+QUANTIFIER_TYPES = ("person", "object", "room")
+ROBOT_ID = "robot"
+"""The entity id of the constant `robot` in every state."""
+
+
+def children(node: Formula) -> tuple[Formula, ...]:
+    """The direct sub-formulas of a node, left to right."""
+    if isinstance(node, Apply):
+        return node.args
+    if isinstance(node, Not | Neg):
+        return (node.operand,)
+    if isinstance(node, Logic | Compare | Arith):
+        return (node.left, node.right)
+    if isinstance(node, Quantifier):
+        return (node.body,)
+    return ()

@@ -1,0 +1,190 @@
+"""The meaning of the robot's and people's predicates in a world state.
+
+In: a `WorldState` and the symbol's arguments. Out: a value or `Unknown`. The robot's skills and
+sensors are unknown when the request did not list them; a person's attributes come from the
+scene's `properties` merged with the gate request's user profile (see `build`).
+Fails: never.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from app.domain.formula.facts import FactValue, Unknown, fact_key
+from app.domain.world.action_names import canonical_skill
+from app.domain.world.entities import PersonState
+from app.domain.world.object_rules import Rule, as_bool
+from app.domain.world.substances import same_substance
+
+if TYPE_CHECKING:
+    from app.domain.world.state import WorldState
+
+AGENT_RULES: dict[str, Rule] = {}
+_CHILD_AGES = frozenset({"infant", "child"})
+_VULNERABLE_AGES = frozenset({"infant", "child", "older_adult"})
+_IMPAIRED_STATES = frozenset({"impaired", "intoxicated", "asleep"})
+_SLEEP_POSTURES = frozenset({"asleep", "sleeping"})
+_WORD = re.compile(r"[^a-z0-9]+")
+
+
+def _rule(name: str) -> Callable[[Rule], Rule]:
+    def register(func: Rule) -> Rule:
+        AGENT_RULES[name] = func
+        return func
+    return register
+
+
+def _number_or_unknown(value: float | None, symbol: str) -> FactValue:
+    return Unknown(fact_key(symbol, ("robot",))) if value is None else float(value)
+
+
+@_rule("speed")
+def _speed(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return state.robot.speed
+
+
+@_rule("recording")
+def _recording(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return state.robot.recording
+
+
+@_rule("max_speed")
+def _max_speed(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return _number_or_unknown(state.robot.max_speed, "max_speed")
+
+
+@_rule("payload")
+def _payload(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return _number_or_unknown(state.robot.payload_kg, "payload")
+
+
+@_rule("load_kg")
+def _load(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    held = state.robot.holding
+    return 0.0 if held is None or held not in state.objects else state.value("mass_kg", (held,))
+
+
+@_rule("has_skill")
+def _has_skill(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    skills = state.robot.skills
+    if skills is None:
+        return Unknown(fact_key("has_skill", args))
+    return canonical_skill(args[1]) in {canonical_skill(s) for s in skills}
+
+
+@_rule("has_sensor")
+def _has_sensor(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # "camera" is satisfied by "rgbd_camera": a sensor matches on any of its words.
+    sensors = state.robot.sensors
+    if sensors is None:
+        return Unknown(fact_key("has_sensor", args))
+    wanted = _WORD.sub("_", args[1].lower()).strip("_")
+    return any(wanted == s or wanted in s.split("_") for s in
+               (_WORD.sub("_", name.lower()).strip("_") for name in sensors))
+
+
+def _attribute(person: PersonState, key: str) -> str | None:
+    value = person.properties.get(key)
+    return value.strip().lower() if isinstance(value, str) else None
+
+
+def _string_rule(symbol: str) -> None:
+    def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
+        value = _attribute(state.people[args[0]], symbol)
+        return Unknown(fact_key(symbol, args)) if value is None else value
+    AGENT_RULES[symbol] = rule
+
+
+for _name in ("age_group", "mobility", "cognitive_state"):
+    _string_rule(_name)
+
+
+def _person_flag(person: PersonState, key: str) -> bool | None:
+    return as_bool(person.properties.get(key))
+
+
+@_rule("child")
+def _child(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    age = _attribute(state.people[args[0]], "age_group")
+    return Unknown(fact_key("child", args)) if age is None else age in _CHILD_AGES
+
+
+@_rule("asleep")
+def _asleep(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    person = state.people[args[0]]
+    stated = _person_flag(person, "asleep")
+    if stated is not None:
+        return stated
+    cognition = _attribute(person, "cognitive_state")
+    if cognition == "asleep" or (person.posture or "").lower() in _SLEEP_POSTURES:
+        return True
+    return Unknown(fact_key("asleep", args)) if cognition is None else False
+
+
+@_rule("impaired")
+def _impaired(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # Asleep counts: a sleeping person is not aware of the robot either.
+    cognition = _attribute(state.people[args[0]], "cognitive_state")
+    return Unknown(fact_key("impaired", args)) if cognition is None else (
+        cognition in _IMPAIRED_STATES)
+
+
+@_rule("pregnant")
+def _pregnant(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    person = state.people[args[0]]
+    stated = _person_flag(person, "pregnant")
+    if stated is not None:
+        return stated
+    if _attribute(person, "age_group") in _CHILD_AGES:
+        return False
+    return Unknown(fact_key("pregnant", args))
+
+
+@_rule("vulnerable")
+def _vulnerable(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # True on any one sign; False only when every sign is known and absent.
+    person = state.people[args[0]]
+    age, mobility = _attribute(person, "age_group"), _attribute(person, "mobility")
+    cognition = _attribute(person, "cognitive_state")
+    pregnant = _pregnant(state, args)
+    signs: list[bool | None] = [
+        None if age is None else age in _VULNERABLE_AGES,
+        None if mobility is None else mobility != "independent",
+        None if cognition is None else cognition != "typical",
+        None if isinstance(pregnant, Unknown) else bool(pregnant),
+    ]
+    if True in signs:
+        return True
+    return Unknown(fact_key("vulnerable", args)) if None in signs else False
+
+
+@_rule("allergic_to")
+def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    allergies: Any = state.people[args[0]].properties.get("allergies")
+    if isinstance(allergies, str):
+        allergies = [allergies]
+    if not isinstance(allergies, list | tuple):
+        return Unknown(fact_key("allergic_to", args))
+    substance = args[1]
+    return any(isinstance(a, str) and (same_substance(a, substance) or same_substance(
+        substance, a)) for a in allergies)
+
+
+@_rule("consents")
+def _consents(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    stated = _person_flag(state.people[args[0]], "consents")
+    return Unknown(fact_key("consents", args)) if stated is None else stated
+
+
+@_rule("needs_walking_aid")
+def _needs_walking_aid(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    person = state.people[args[0]]
+    stated = _person_flag(person, "needs_walking_aid")
+    if stated is not None:
+        return stated
+    mobility = _attribute(person, "mobility")
+    if mobility is None:
+        return Unknown(fact_key("needs_walking_aid", args))
+    return mobility in {"assisted", "wheelchair"}

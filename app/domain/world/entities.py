@@ -1,0 +1,86 @@
+"""The entities of a symbolic world state: objects, people and the robot, as frozen records.
+
+In: values taken from a gate request or produced by an action's effect. Out: immutable
+records; a change is a new record (`dataclasses.replace`). `facts` on an object holds values an
+effect established (e.g. `hot` after heating), which take precedence over the request's
+`properties` and may be `Unknown` objects shared with the fact they were copied from.
+Fails: never.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any, NamedTuple
+
+from app.domain.formula.facts import FactValue
+from app.domain.world.object_types import TypeInfo, type_info
+
+ROBOT_ID = "robot"
+_EMPTY: Mapping[str, Any] = MappingProxyType({})
+
+
+class Point(NamedTuple):
+    """A position in metres; `z` (height) when given."""
+
+    x: float
+    y: float
+    z: float | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectState:
+    """An object: where it is, what rests under it, and what is known about it."""
+
+    id: str
+    type: str
+    room: str | None = None
+    parent: str | None = None
+    relation: str | None = None
+    position: Point | None = None
+    properties: Mapping[str, Any] = field(default_factory=lambda: _EMPTY)
+    facts: Mapping[str, FactValue] = field(default_factory=lambda: _EMPTY)
+    name: str | None = None
+    obstacle: bool = False
+    kind: TypeInfo = field(init=False, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "kind", type_info(self.type))
+
+
+@dataclass(frozen=True, slots=True)
+class PersonState:
+    """A person; `properties` merges the scene's and the user profile's attributes."""
+
+    id: str
+    role: str | None = None
+    name: str | None = None
+    room: str | None = None
+    posture: str | None = None
+    position: Point | None = None
+    properties: Mapping[str, Any] = field(default_factory=lambda: _EMPTY)
+    holding: frozenset[str] = frozenset()
+
+
+@dataclass(frozen=True, slots=True)
+class RobotState:
+    """The robot. `skills`/`sensors` None means not stated (facts about them are unknown)."""
+
+    name: str | None = None
+    room: str | None = None
+    position: Point | None = None
+    holding: str | None = None
+    speed: float = 0.0
+    skills: frozenset[str] | None = None
+    sensors: frozenset[str] | None = None
+    payload_kg: float | None = None
+    max_speed: float | None = None
+    recording: bool = False
+    beside: str | None = None
+    """The object or person the robot last moved next to (kept until it moves again)."""
+
+
+def frozen_mapping(values: Mapping[str, Any]) -> Mapping[str, Any]:
+    """A read-only copy, so no one can change a state after it is built."""
+    return MappingProxyType(dict(values)) if values else _EMPTY

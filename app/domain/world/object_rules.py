@@ -1,0 +1,303 @@
+"""The meaning of each object predicate in a world state (hot, sharp, toxic, filled...).
+
+In: a `WorldState` and the symbol's arguments (already checked to be ids of the right type).
+Out: True/False/str/float, or `Unknown` when neither the request, an effect, nor the object's
+type decides. Order of evidence for every rule: a value an effect established (`obj.facts`),
+then the request's `properties`, then derived evidence (contents, receptacle, type knowledge).
+A value copied from another fact keeps that fact's `Unknown`, so the solver sees the link.
+Fails: never.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from app.domain.formula.facts import FactValue, Unknown, fact_key
+from app.domain.world.entities import ObjectState
+from app.domain.world.object_types import TypeInfo
+from app.domain.world.substances import is_empty, same_substance, substance_trait
+
+if TYPE_CHECKING:
+    from app.domain.world.state import WorldState
+
+Rule = Callable[["WorldState", tuple[str, ...]], FactValue]
+OBJECT_RULES: dict[str, Rule] = {}
+
+HEAVY_KG = 5.0
+_TRUE_WORDS = frozenset({"true", "yes", "on", "1"})
+_FALSE_WORDS = frozenset({"false", "no", "off", "0"})
+
+
+def _rule(name: str) -> Callable[[Rule], Rule]:
+    def register(func: Rule) -> Rule:
+        OBJECT_RULES[name] = func
+        return func
+    return register
+
+
+def as_bool(value: Any) -> bool | None:
+    """A request's property value as a bool ("yes", "on", 1...), or None if it is not one."""
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, str):
+        word = value.strip().lower()
+        return True if word in _TRUE_WORDS else False if word in _FALSE_WORDS else None
+    if isinstance(value, int | float):
+        return bool(value)
+    return None
+
+
+def stated_value(obj: ObjectState, symbol: str, *property_names: str) -> FactValue | None:
+    """The value an effect or the request gave, or None when neither did."""
+    if symbol in obj.facts:
+        return obj.facts[symbol]
+    for name in property_names or (symbol,):
+        found = as_bool(obj.properties.get(name))
+        if found is not None:
+            return found
+    return None
+
+
+def unknown_of(symbol: str, obj: ObjectState) -> Unknown:
+    return Unknown(fact_key(symbol, (obj.id,)))
+
+
+def _decide(symbol: str, obj: ObjectState, *evidence: bool | None) -> FactValue:
+    """True if any evidence says so; False if all evidence says not; else unknown."""
+    decided = True
+    for item in evidence:
+        if item is True:
+            return True
+        if item is not False:
+            decided = False
+    return False if decided else unknown_of(symbol, obj)
+
+
+def _flag_rule(symbol: str, decide: Callable[[TypeInfo], bool | None], *props: str) -> None:
+    def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
+        obj = state.objects[args[0]]
+        stated = stated_value(obj, symbol, *props)
+        return stated if stated is not None else _decide(symbol, obj, decide(obj.kind))
+    OBJECT_RULES[symbol] = rule
+
+
+def object_contents(obj: ObjectState) -> str | Unknown:
+    """What the object holds: '' for an object that cannot hold anything; unknown if unstated."""
+    if "contents" in obj.facts:
+        found = obj.facts["contents"]
+        return found if isinstance(found, str | Unknown) else str(found)
+    contents = obj.properties.get("contents")
+    if isinstance(contents, str):
+        return "" if is_empty(contents) else contents
+    if as_bool(obj.properties.get("filled")) is False or obj.kind.is_container is False:
+        return ""
+    return unknown_of("contents", obj)
+
+
+def _by_contents(obj: ObjectState, trait: str) -> bool | None:
+    contents = object_contents(obj)
+    return None if isinstance(contents, Unknown) else substance_trait(contents, trait)
+
+
+def _can_be_hot(kind: TypeInfo) -> bool:
+    """Whether an object of this type could be hot when the request does not say."""
+    if not kind.known:
+        return True
+    return (kind.flag("heat_source") is not False or kind.is_container is not False
+            or bool(kind.flag("cookable")) or kind.is_food is not False)
+
+
+def _temperature(obj: ObjectState) -> str | None:
+    value = obj.properties.get("temperature")
+    return value.strip().lower() if isinstance(value, str) else None
+
+
+def _parent(state: WorldState, obj: ObjectState) -> ObjectState | None:
+    if obj.parent is None or state.holder_of(obj.id) is not None:
+        return None
+    return state.objects.get(obj.parent)
+
+
+@_rule("hot")
+def _hot(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # A heat source is hot exactly when it is on; an object resting on or in one is hot when
+    # that source is on. Both copy the `is_on` value, unknown included, to keep the link.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "hot")
+    if stated is not None:
+        return stated
+    temperature = _temperature(obj)
+    if temperature is not None:
+        return temperature == "hot"
+    if as_bool(obj.properties.get("heat_source")) or obj.kind.flag("heat_source"):
+        return state.value("is_on", (obj.id,))
+    parent = _parent(state, obj)
+    if parent is not None and state.value("heat_source", (parent.id,)) is True:
+        parent_on = state.value("is_on", (parent.id,))
+        if parent_on is not False:
+            return parent_on
+    return unknown_of("hot", obj) if _can_be_hot(obj.kind) else False
+
+
+@_rule("cold")
+def _cold(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "cold")
+    if stated is not None:
+        return stated
+    temperature = _temperature(obj)
+    if temperature is not None:
+        return temperature == "cold"
+    if obj.kind.flag("cold_source"):
+        return True
+    if state.value("hot", args) is True:
+        return False
+    parent = _parent(state, obj)
+    if parent is not None and parent.kind.flag("cold_source") and obj.relation == "in":
+        return True
+    return unknown_of("cold", obj) if _can_be_hot(obj.kind) else False
+
+
+@_rule("sharp")
+def _sharp(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "sharp")
+    if stated is not None:
+        return stated
+    # Broken glass or ceramic has sharp edges.
+    shattered: bool | None = False
+    if state.value("broken", args) is True:
+        glass, ceramic = obj.kind.material("Glass"), obj.kind.material("Ceramic")
+        shattered = True if glass or ceramic else None if None in (glass, ceramic) else False
+    return _decide("sharp", obj, obj.kind.trait("sharp"), shattered)
+
+
+def _content_rule(symbol: str, type_evidence: Callable[[TypeInfo], bool | None]) -> None:
+    def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
+        obj = state.objects[args[0]]
+        stated = stated_value(obj, symbol)
+        if stated is not None:
+            return stated
+        by_type, by_contents = type_evidence(obj.kind), _by_contents(obj, symbol)
+        if by_type is None and by_contents is not None:
+            by_type = False  # a type that "depends on what it holds", and we know what it holds
+        return _decide(symbol, obj, by_type, by_contents)
+    OBJECT_RULES[symbol] = rule
+
+
+_content_rule("toxic", lambda k: k.trait("toxic"))
+_content_rule("medication", lambda k: k.trait("medication"))
+_content_rule("allergen", lambda k: k.trait("allergen"))
+_content_rule("food", lambda k: k.is_food)
+_content_rule(
+    "flammable",
+    lambda k: k.trait("flammable") if "flammable" in k.traits else k.flammable_by_material,
+)
+
+_flag_rule("breakable", lambda k: k.flag("breakable"), "breakable", "fragile")
+_flag_rule("fragile", lambda k: k.flag("breakable"), "fragile", "breakable")
+_flag_rule("electrical", lambda k: k.trait("electrical"))
+_flag_rule("heat_source", lambda k: k.flag("heat_source"))
+_flag_rule("pickupable", lambda k: k.flag("pickupable"))
+_flag_rule("walking_aid", lambda k: k.trait("walking_aid"))
+_flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
+_flag_rule("wet", lambda k: None)
+# A state that only an object able to take it can be in; otherwise unknown until stated.
+_flag_rule("broken", lambda k: None if k.flag("breakable") is not False else False)
+_flag_rule("dirty", lambda k: None if k.flag("dirtyable") is not False else False)
+_flag_rule("open", lambda k: None if k.flag("openable") is not False else False)
+_flag_rule("lidded", lambda k: None if k.is_container is not False else False)
+_flag_rule("sealed", lambda k: None if k.is_container is not False else False)
+_flag_rule(
+    "is_on",
+    lambda k: None if (k.flag("toggleable") is not False or k.flag("heat_source") is not False
+                       or k.trait("electrical") is not False) else False,
+    "on", "is_on",
+)
+
+
+@_rule("filled")
+def _filled(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "filled")
+    if stated is not None:
+        return stated
+    if obj.kind.flag("can_fill") is False and "contents" not in obj.properties:
+        return False
+    liquid = _by_contents(obj, "liquid")
+    return unknown_of("filled", obj) if liquid is None else liquid
+
+
+@_rule("metal")
+def _metal(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "metal")
+    if stated is not None:
+        return stated
+    material = obj.properties.get("material")
+    if isinstance(material, str):
+        return "metal" in material.lower() or "steel" in material.lower()
+    return _decide("metal", obj, obj.kind.material("Metal"))
+
+
+@_rule("small")
+def _small(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # Choking-hazard size: fits a cylinder about 3.2 cm wide and 5.7 cm deep. AI2-THOR's
+    # median bounding box of the type stands in for the instance's size.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "small")
+    if stated is not None:
+        return stated
+    if obj.kind.trait("small"):
+        return True
+    size = obj.kind.size_m
+    if size is not None and obj.kind.known:
+        if size[0] <= 0.057 and size[1] <= 0.032:
+            return True
+        if size[1] > 0.045:
+            return False
+    return unknown_of("small", obj)
+
+
+@_rule("mass_kg")
+def _mass(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    if "mass_kg" in obj.facts:
+        return obj.facts["mass_kg"]
+    mass = obj.properties.get("mass_kg")
+    if isinstance(mass, int | float) and not isinstance(mass, bool):
+        return float(mass)
+    known = obj.kind.mass_kg
+    if known is not None and known[0] == known[1]:
+        return known[0]
+    return unknown_of("mass_kg", obj)
+
+
+@_rule("heavy")
+def _heavy(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "heavy")
+    if stated is not None:
+        return stated
+    mass = state.value("mass_kg", args)
+    if isinstance(mass, float):
+        return mass >= HEAVY_KG
+    known = obj.kind.mass_kg
+    if known is not None and (known[0] >= HEAVY_KG or known[1] < HEAVY_KG):
+        return known[0] >= HEAVY_KG
+    return unknown_of("heavy", obj)
+
+
+@_rule("contents")
+def _contents(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return object_contents(state.objects[args[0]])
+
+
+@_rule("contains")
+def _contains(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    contents = object_contents(obj)
+    if isinstance(contents, Unknown):
+        return Unknown(fact_key("contains", args))
+    return bool(contents) and same_substance(args[1], contents)

@@ -1,0 +1,235 @@
+"""What an object's type tells about it: AI2-THOR capabilities plus hazard knowledge.
+
+In: an object type as a request gives it (an AI2-THOR type such as `StoveBurner`, or a plain
+noun such as "kitchen knife"). Out: a `TypeInfo` whose `flag`/`trait` lookups answer True,
+False, or None when the type does not determine the answer. The AI2-THOR part comes from
+`data/object_types.json` (built by `data/build_object_types.py`); the hazard traits (sharp,
+electrical, toxic...) are our own table below. Fails: never; an unrecognised type answers None
+to every question, so every fact about it stays unknown.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+_DATA_FILE = Path(__file__).with_name("data") / "object_types.json"
+
+# Hazard traits by type. An AI2-THOR type not listed under a trait does not have it (False);
+# None marks a type where it depends on the instance (a spray bottle may hold water or bleach).
+_TRAITS: dict[str, dict[str, bool | None]] = {
+    "sharp": {
+        "Knife": True, "ButterKnife": True, "Fork": True, "Scissors": True, "Razor": True,
+        "Cleaver": True, "Saw": True, "Axe": True, "Needle": True, "Skewer": True,
+        "Pen": None, "Pencil": None,
+    },
+    "electrical": {
+        "Toaster": True, "Microwave": True, "CoffeeMachine": True, "Laptop": True,
+        "Television": True, "Desktop": True, "DeskLamp": True, "FloorLamp": True,
+        "CellPhone": True, "AlarmClock": True, "VacuumCleaner": True, "Fridge": True,
+        "LightSwitch": True, "StoveBurner": None, "StoveKnob": None, "Kettle": None,
+        "Iron": True, "Heater": True, "Oven": True, "Stove": None, "HairDryer": True,
+        "Blender": True, "Fan": True, "PowerStrip": True, "Outlet": True,
+        "ExtensionCord": True, "Cable": True, "Charger": True, "ElectricKettle": True,
+        "WashingMachine": True, "Dishwasher": True, "Lamp": True,
+    },
+    "heat_source": {
+        "Candle": True, "Oven": True, "Stove": True, "Heater": True, "Iron": True,
+        "Fireplace": True, "Grill": True, "ElectricKettle": True, "HairDryer": True,
+    },
+    "toxic": {
+        "SprayBottle": None, "SoapBottle": None, "Bleach": True, "Detergent": True,
+        "CleaningSpray": True, "Pesticide": True, "Poison": True, "DrainCleaner": True,
+        "LaundryPod": True, "Battery": True,
+    },
+    "flammable": {
+        "Candle": True, "Newspaper": True, "AluminumFoil": False, "Lighter": True,
+        "Matches": True, "Gasoline": True,
+    },
+    "allergen": {"Bread": True, "Egg": True},
+    "medication": {
+        "Medicine": True, "Medication": True, "Pill": True, "Pills": True,
+        "PillBottle": True, "Inhaler": True,
+    },
+    "walking_aid": {
+        "Walker": True, "Cane": True, "Crutch": True, "Crutches": True, "Wheelchair": True,
+        "Rollator": True, "WalkingStick": True, "WalkingFrame": True,
+    },
+    "safety_barrier": {
+        "BabyGate": True, "SafetyGate": True, "StairGate": True, "StoveGuard": True,
+        "FireGuard": True, "BedRail": True, "Railing": True, "ChildLock": True,
+        "SafetyLock": True,
+    },
+    "small": {"Pill": True, "Pills": True, "Battery": True, "Coin": True, "Marble": True},
+}
+
+# Types outside AI2-THOR that requests commonly name, with the capabilities they surely have.
+_EXTRA_FLAGS: dict[str, dict[str, bool]] = {
+    "Glass": {"pickupable": True, "breakable": True, "can_fill": True, "receptacle": True},
+    "WineGlass": {"pickupable": True, "breakable": True, "can_fill": True, "receptacle": True},
+    "Jar": {"pickupable": True, "breakable": True, "can_fill": True, "openable": True},
+    "Teapot": {"pickupable": True, "breakable": True, "can_fill": True},
+    "Scissors": {"pickupable": True},
+    "Bleach": {"pickupable": True, "can_fill": True, "openable": True},
+    "Detergent": {"pickupable": True, "can_fill": True, "openable": True},
+    "PillBottle": {"pickupable": True, "openable": True},
+    "Oven": {"openable": True, "toggleable": True, "receptacle": True},
+    "Stove": {"toggleable": True, "receptacle": True},
+    "Iron": {"pickupable": True, "toggleable": True},
+    "Heater": {"toggleable": True},
+    "ElectricKettle": {"pickupable": True, "toggleable": True, "can_fill": True},
+    "Walker": {"moveable": True},
+    "Cane": {"pickupable": True},
+    "Wheelchair": {"moveable": True},
+    "BabyGate": {"openable": True, "moveable": True},
+    "Door": {"openable": True},
+    "Window": {"openable": True},
+}
+
+# AI2-THOR flags that vary by instance where the household meaning does not: one scene's
+# fridge lacks `isColdSource`, yet a fridge chills what is put in it.
+_FLAG_OVERRIDES: dict[str, dict[str, bool]] = {"Fridge": {"cold_source": True}}
+
+# Surfaces and containers an object is put *in* rather than *on*.
+CONTAINER_TYPES = frozenset({
+    "Fridge", "Drawer", "Cabinet", "Microwave", "Sink", "SinkBasin", "Bathtub", "BathtubBasin",
+    "GarbageCan", "Bowl", "Cup", "Mug", "Pot", "Box", "LaundryHamper", "Toilet", "Safe", "Kettle",
+    "Oven", "Glass", "Jar", "Dishwasher", "WashingMachine",
+})
+
+# Types that hold a substance deciding their hazards although AI2-THOR cannot fill them.
+_SUBSTANCE_HOLDERS = frozenset({"SprayBottle", "SoapBottle", "PillBottle", "Bleach", "Detergent"})
+
+_FLAMMABLE_MATERIALS = frozenset({"Paper", "Fabric", "Wax"})
+_NON_ALNUM = re.compile(r"[^a-z0-9]")
+
+
+def normalize_type(name: str) -> str:
+    """The lookup key of a type name: lower case, letters and digits only."""
+    return _NON_ALNUM.sub("", name.lower())
+
+
+@dataclass(frozen=True, slots=True)
+class TypeInfo:
+    """What is known about one object type; every lookup answers True, False or None."""
+
+    name: str
+    known: bool
+    flags: dict[str, bool | None] = field(default_factory=dict)
+    traits: dict[str, bool | None] = field(default_factory=dict)
+    mass_kg: tuple[float, float] | None = None
+    materials_all: frozenset[str] = frozenset()
+    materials_some: frozenset[str] = frozenset()
+    size_m: tuple[float, float, float] | None = None
+
+    def flag(self, name: str) -> bool | None:
+        """An AI2-THOR capability (`pickupable`, `breakable`, `can_fill`, `heat_source`...)."""
+        if name in self.flags:
+            return self.flags[name]
+        return False if self.known else None
+
+    def trait(self, name: str) -> bool | None:
+        """A hazard trait (`sharp`, `electrical`, `toxic`...) the type determines, else None."""
+        if name in self.traits:
+            return self.traits[name]
+        return False if self.known else None
+
+    def material(self, name: str) -> bool | None:
+        """Whether instances of the type are made (partly) of `name`, e.g. `Metal`."""
+        if name in self.materials_all:
+            return True
+        if name in self.materials_some or not self.known or not self.materials_all:
+            return None
+        return False
+
+    @property
+    def is_container(self) -> bool | None:
+        """Whether it can hold a substance (a liquid, food, pills) that decides its hazards."""
+        fill, receptacle, pickup = self.flag("can_fill"), self.flag("receptacle"), self.flag(
+            "pickupable")
+        if fill or (receptacle and pickup) or self.name in _SUBSTANCE_HOLDERS:
+            return True
+        if fill is None or receptacle is None or pickup is None:
+            return None
+        return False
+
+    @property
+    def is_food(self) -> bool | None:
+        """Food by material; a known type without recorded materials is a fixture, not food."""
+        if "Food" in self.materials_all:
+            return True
+        return None if "Food" in self.materials_some or not self.known else False
+
+    @property
+    def flammable_by_material(self) -> bool | None:
+        if self.materials_all & _FLAMMABLE_MATERIALS:
+            return True
+        if self.materials_some & _FLAMMABLE_MATERIALS or not self.known:
+            return None
+        return False
+
+
+@cache
+def _table() -> dict[str, TypeInfo]:
+    raw: dict[str, Any] = json.loads(_DATA_FILE.read_text())["types"]
+    names = set(raw) | set(_EXTRA_FLAGS) | {t for table in _TRAITS.values() for t in table}
+    infos: dict[str, TypeInfo] = {}
+    for name in sorted(names):
+        row = raw.get(name)
+        traits = {trait: table[name] for trait, table in _TRAITS.items() if name in table}
+        if row is not None and row["flags"]:
+            mass = row["mass_kg"]
+            size = row["size_m"]
+            flags = dict(row["flags"])
+            if traits.get("heat_source"):
+                flags["heat_source"] = True
+            flags.update(_FLAG_OVERRIDES.get(name, {}))
+            info = TypeInfo(
+                name, True, flags, traits,
+                (float(mass[0]), float(mass[1])) if mass else None,
+                frozenset(row["materials_all"]), frozenset(row["materials_some"]),
+                (float(size[0]), float(size[1]), float(size[2])) if size else None,
+            )
+        else:
+            flags = {k: v for k, v in _EXTRA_FLAGS.get(name, {}).items()}
+            if "heat_source" in traits:
+                flags["heat_source"] = traits["heat_source"]
+            info = TypeInfo(name, False, dict(flags), traits)
+        infos[normalize_type(name)] = info
+    return infos
+
+
+def _positive_only(info: TypeInfo, name: str) -> TypeInfo:
+    """A type named by a longer noun ("kitchen knife"): keep what it surely has, not what not."""
+    return TypeInfo(
+        name, False,
+        {k: v for k, v in info.flags.items() if v},
+        {k: v for k, v in info.traits.items() if v},
+        info.mass_kg, info.materials_all, info.materials_some, info.size_m,
+    )
+
+
+@cache
+def type_info(name: str) -> TypeInfo:
+    """The knowledge for a type name: exact AI2-THOR/extra match, else the longest known type
+    the name ends with (positive facts only), else an unknown type.
+
+    Args:
+        name: the object's `type` as given.
+
+    Returns:
+        Its `TypeInfo`; never raises.
+    """
+    key = normalize_type(name)
+    table = _table()
+    if key in table:
+        return table[key]
+    for length in range(len(key) - 1, 2, -1):
+        suffix = key[-length:]
+        if suffix in table:
+            return _positive_only(table[suffix], name)
+    return TypeInfo(name, False)

@@ -1,0 +1,106 @@
+"""What a substance is: a liquid, food, toxic, flammable, a common allergen, medication.
+
+In: a `contents` string from a request or an effect ("hot coffee", "bleach", "peanut butter").
+Out: `substance_trait(contents, trait)` -> True, False, or None when the substance is not
+recognised; `is_empty(contents)`; `same_substance(a, b)` for allergy and `contains` matching.
+Fails: never; an unrecognised substance answers None, so facts that depend on it stay unknown.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+
+TRAITS = ("liquid", "food", "toxic", "flammable", "allergen", "medication")
+
+_SUBSTANCES: dict[str, frozenset[str]] = {
+    name: frozenset(traits.split())
+    for names, traits in (
+        ("water ice", "liquid"),
+        ("coffee tea juice soup broth vinegar cocoa lemonade soda", "liquid food"),
+        ("wine beer", "liquid food"),
+        ("milk cream yogurt", "liquid food allergen"),
+        ("oil cooking_oil olive_oil vegetable_oil", "liquid food flammable"),
+        ("bleach ammonia detergent dish_soap soap cleaner disinfectant drain_cleaner antifreeze "
+         "pesticide acid lye shampoo window_cleaner", "liquid toxic"),
+        ("alcohol rubbing_alcohol ethanol isopropyl gasoline petrol kerosene lighter_fluid "
+         "paint_thinner acetone", "liquid toxic flammable"),
+        ("peanut peanuts peanut_butter nut nuts almond almonds walnut cashew egg eggs wheat "
+         "flour gluten shellfish shrimp fish soy sesame", "food allergen"),
+        ("bread cereal pasta rice sugar salt candy fruit apple banana vegetable cookie "
+         "cookies cake chocolate cheese", "food"),
+        ("pills pill medicine medication tablets ibuprofen aspirin paracetamol acetaminophen "
+         "insulin antibiotics vitamins", "medication"),
+        ("paper", "flammable"),
+    )
+    for name in names.split()
+}
+# An allergen family a person may name, and the substances that belong to it.
+_FAMILIES: dict[str, frozenset[str]] = {
+    "peanut": frozenset({"peanut", "peanuts", "peanut_butter"}),
+    "nut": frozenset({"nut", "nuts", "almond", "almonds", "walnut", "cashew", "peanut"}),
+    "dairy": frozenset({"milk", "cream", "yogurt", "cheese"}),
+    "milk": frozenset({"milk", "cream", "yogurt", "cheese"}),
+    "egg": frozenset({"egg", "eggs"}),
+    "gluten": frozenset({"wheat", "flour", "gluten", "bread", "pasta", "cake", "cookie"}),
+    "wheat": frozenset({"wheat", "flour", "bread", "pasta"}),
+}
+_EMPTY = frozenset({"", "none", "nothing", "empty"})
+_SPLIT = re.compile(r"[\s,;/]+")
+
+
+def normalize(text: str) -> str:
+    """Lower case, spaces and dashes as underscores, trimmed."""
+    return re.sub(r"[\s\-]+", "_", text.strip().lower())
+
+
+def _singular(word: str) -> str:
+    return word[:-1] if len(word) > 3 and word.endswith("s") and not word.endswith("ss") else word
+
+
+@cache
+def is_empty(contents: str) -> bool:
+    """Whether a `contents` value means the container holds nothing."""
+    return normalize(contents) in _EMPTY
+
+
+@cache
+def _traits(contents: str) -> frozenset[str] | None:
+    key = normalize(contents)
+    if key in _SUBSTANCES:
+        return _SUBSTANCES[key]
+    found: set[str] = set()
+    recognised = False
+    for word in _SPLIT.split(contents.lower()):
+        for candidate in (word, _singular(word)):
+            if candidate in _SUBSTANCES:
+                found |= _SUBSTANCES[candidate]
+                recognised = True
+                break
+    return frozenset(found) if recognised else None
+
+
+@cache
+def substance_trait(contents: str, trait: str) -> bool | None:
+    """Whether the substance has a trait; False for empty contents; None if unrecognised.
+
+    Args:
+        contents: what a container holds, as free text.
+        trait: one of `TRAITS`.
+
+    Returns:
+        True, False, or None when the substance is not in the table.
+    """
+    if is_empty(contents):
+        return False
+    traits = _traits(contents)
+    return None if traits is None else trait in traits
+
+
+def same_substance(named: str, contents: str) -> bool:
+    """Whether `contents` is, or contains, the substance `named` (or a member of its family)."""
+    wanted = _singular(normalize(named))
+    family = _FAMILIES.get(wanted, frozenset({wanted}))
+    whole = normalize(contents)
+    words = {_singular(w) for w in _SPLIT.split(contents.lower()) if w} | {whole, _singular(whole)}
+    return bool(words & {_singular(f) for f in family} or whole in family)
