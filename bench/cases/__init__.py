@@ -1,0 +1,1 @@
+"""The project's benchmark: `benchmark.jsonl`, built by `build_benchmark.py` from `data/`."""

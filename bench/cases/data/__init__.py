@@ -1,0 +1,1 @@
+"""Hand-written case descriptions, one module per domain x complexity cell of the grid."""
