@@ -55,3 +55,7 @@ def bench_score(
 def main() -> None:
     """Entry point of the `safegate` console script."""
     cli()
+
+
+if __name__ == "__main__":
+    main()

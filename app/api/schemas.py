@@ -12,7 +12,8 @@ from pydantic import BaseModel, ConfigDict, Field
 from app.domain.binding import BindingResult
 from app.domain.contracts import Contract, ContractCondition, planner_constraints
 from app.domain.models import HazardProposal, UnknownFact
-from app.services import GateRecord
+from app.services.gate import Decided
+from app.store.records import ContractRecord
 
 
 class HazardOut(BaseModel):
@@ -125,8 +126,8 @@ def suggested_template(proposal: HazardProposal) -> dict[str, Any]:
     }
 
 
-def gate_response(record: GateRecord) -> GateResponse:
-    result = record.result
+def gate_response(decided: Decided) -> GateResponse:
+    result, record = decided.result, decided.record
     decision = result.decision
     triggers = [f"{h.hazard_class}: {h.mechanism}" for h in decision.trigger_hazards] + [
         f"unknown {u.attribute}: {u.description}" for u in decision.trigger_unknowns
@@ -137,7 +138,7 @@ def gate_response(record: GateRecord) -> GateResponse:
         if decision.defer_kind is not None and decision.defer_kind.value == "extend_library"
     ]
     return GateResponse(
-        request_id=record.request_id,
+        request_id=str(record.id),
         decision=decision.decision.value,
         rule=decision.rule.value,
         defer_kind=decision.defer_kind.value if decision.defer_kind else None,
@@ -193,16 +194,16 @@ def _condition(condition: ContractCondition) -> ContractConditionOut:
     )
 
 
-def contract_response(contract_id: str, contract: Contract, meta: dict[str, Any]) -> ContractResponse:
+def contract_response(contract: Contract, stored: ContractRecord) -> ContractResponse:
     return ContractResponse(
-        contract_id=contract_id,
-        request_id=meta.get("request_id"),
+        contract_id=str(stored.id),
+        request_id=stored.request_id,
         invariants=[_condition(c) for c in contract.invariants],
         guards=[_condition(c) for c in contract.guards],
         aborts=[_condition(c) for c in contract.aborts],
         template_versions=dict(contract.template_versions),
         planner_constraints=planner_constraints(contract),
-        attempts_used=int(meta.get("attempts_used", 0)),
-        attempts_left=meta.get("attempts_left"),
-        status=str(meta.get("status", "active")),
+        attempts_used=stored.attempts_used,
+        attempts_left=stored.attempts_left,
+        status=stored.status.value,
     )

@@ -59,6 +59,9 @@ class GatePolicy:
     theta: Severity = Severity.HIGH
 
 
+DEFAULT_POLICY = GatePolicy()
+
+
 class GateDecision(BaseModel):
     """The gate's verdict with its reasons."""
 
@@ -77,7 +80,7 @@ def decide(
     bound: Sequence[HazardProposal],
     unbound: Sequence[HazardProposal],
     unknowns: Sequence[UnknownFact],
-    policy: GatePolicy = GatePolicy(),
+    policy: GatePolicy = DEFAULT_POLICY,
 ) -> GateDecision:
     """Run the cascade R1, R1b, R2, R3, R3b, R4 and return the first rule that matches.
 

@@ -20,7 +20,15 @@ from pydantic import BaseModel, ConfigDict
 from app.domain.binding import BindingResult, TemplateIndex, bind
 from app.domain.contracts import Contract, compile_contract
 from app.domain.errors import FormulaError
-from app.domain.gate import Decision, DeferKind, GateDecision, GatePolicy, Rule, decide
+from app.domain.gate import (
+    DEFAULT_POLICY,
+    Decision,
+    DeferKind,
+    GateDecision,
+    GatePolicy,
+    Rule,
+    decide,
+)
 from app.domain.models import GateRequest, HazardReport, UnknownFact
 
 
@@ -47,7 +55,7 @@ def run_gate(
     *,
     templates: TemplateIndex,
     analyzer: Analyzer,
-    policy: GatePolicy = GatePolicy(),
+    policy: GatePolicy = DEFAULT_POLICY,
     clock: Callable[[], float] = time.perf_counter,
 ) -> GateResult:
     """Decide one request: analyze, bind, decide, and compile the contract on authorize.
@@ -103,7 +111,7 @@ def run_gate(
 def _analyze_or_fail_closed(analyzer: Analyzer, request: GateRequest) -> HazardReport:
     try:
         return analyzer.analyze(request)
-    except Exception as error:  # noqa: BLE001 - any analyzer failure must defer, never pass
+    except Exception as error:
         return HazardReport(
             unknowns=(
                 UnknownFact(

@@ -1,28 +1,22 @@
-"""Application services: what a route calls. They run the domain pipeline and keep the audit trail.
+"""The service container: everything a running gate needs, built once per app in the lifespan.
 
-In: validated requests from routes. Out: records the routes map to responses.
-Every gate decision is written to the audit trail before it is returned; if the write fails the
-caller gets 503 (`Unavailable`), never an unrecorded decision. Fails closed throughout.
+In: settings. Out: `Services` (engine, repository, template cache, analyzer, policy).
+Fails: any start-up failure (database unreachable, migration or seed error) propagates, so the
+app never serves with a half-built gate.
 """
 
 from __future__ import annotations
 
 import threading
-import uuid
-from dataclasses import dataclass, field
-from datetime import UTC, datetime
-from typing import Any
+from dataclasses import dataclass
 
 from sqlalchemy.engine import Engine
 
 from app.config import Settings
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.binding import TemplateIndex
-from app.domain.contracts import Contract
-from app.domain.errors import NotFound
 from app.domain.gate import GatePolicy
-from app.domain.models import GateRequest
-from app.domain.pipeline import Analyzer, GateResult, run_gate
+from app.domain.pipeline import Analyzer
 from app.store import Repository, create_engine_for, migrate, seed_templates
 
 
@@ -45,21 +39,8 @@ class TemplateCache:
 
 
 @dataclass
-class GateRecord:
-    """One decided request as stored in the audit trail."""
-
-    request_id: str
-    created_at: datetime
-    request: GateRequest
-    result: GateResult
-    contract_id: str | None
-    parent_request_id: str | None = None
-    extra: dict[str, Any] = field(default_factory=dict)
-
-
-@dataclass
 class Services:
-    """Everything the routes need, built once per app in the lifespan."""
+    """Everything the routes need."""
 
     settings: Settings
     engine: Engine
@@ -71,34 +52,6 @@ class Services:
     def close(self) -> None:
         self.engine.dispose()
 
-    def decide(self, request: GateRequest, *, parent_request_id: str | None = None) -> GateRecord:
-        """Run Stages 1-4 on a request and record it in the audit trail."""
-        result = run_gate(
-            request, templates=self.templates.index(), analyzer=self.analyzer, policy=self.policy
-        )
-        record = GateRecord(
-            request_id=uuid.uuid4().hex,
-            created_at=datetime.now(UTC),
-            request=request,
-            result=result,
-            contract_id=uuid.uuid4().hex if result.contract is not None else None,
-            parent_request_id=parent_request_id,
-        )
-        self.repository.save_gate_record(record)
-        return record
-
-    def gate_record(self, request_id: str) -> dict[str, Any]:
-        record = self.repository.get_gate_record(request_id)
-        if record is None:
-            raise NotFound(f"no gate request {request_id!r}", field="request_id")
-        return record
-
-    def contract(self, contract_id: str) -> tuple[Contract, dict[str, Any]]:
-        found = self.repository.get_contract(contract_id)
-        if found is None:
-            raise NotFound(f"no contract {contract_id!r}", field="contract_id")
-        return found
-
 
 def build_analyzer(settings: Settings) -> Analyzer:
     """The Stage 1 analyzer the settings ask for (only the symbolic one ships offline)."""
@@ -106,7 +59,7 @@ def build_analyzer(settings: Settings) -> Analyzer:
 
 
 def build_services(settings: Settings) -> Services:
-    """Connect, migrate, seed and load: everything a running gate needs."""
+    """Connect, migrate, seed and load."""
     engine = create_engine_for(settings.database_url)
     if settings.migrate_on_startup:
         migrate(engine)

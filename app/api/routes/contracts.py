@@ -10,6 +10,7 @@ from fastapi.responses import PlainTextResponse, Response
 from app.api.deps import ServicesDep
 from app.api.schemas import ContractResponse, contract_response
 from app.domain.contracts import planner_constraints
+from app.services import gate
 
 router = APIRouter(tags=["contracts"])
 
@@ -19,9 +20,9 @@ def get_contract(
     contract_id: str, services: ServicesDep, format: Literal["json", "planner"] = "json"
 ) -> ContractResponse | Response:
     """The contract as JSON, or (`format=planner`) as plain planning constraints."""
-    contract, meta = services.contract(contract_id)
+    contract, stored = gate.contract_of(services, contract_id)
     if format == "planner":
         lines = planner_constraints(contract)
         header = "Safety constraints your plan must satisfy:\n"
         return PlainTextResponse(header + "\n".join(f"- {line}" for line in lines) + "\n")
-    return contract_response(contract_id, contract, meta)
+    return contract_response(contract, stored)

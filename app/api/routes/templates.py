@@ -32,4 +32,7 @@ def list_templates(
 @router.get("/templates/{template_id}")
 def get_template(template_id: str, services: ServicesDep) -> dict[str, Any]:
     """One template at its current version, with every version kept."""
-    return services.template_with_versions(template_id)
+    history = services.repository.get_template_history(template_id)
+    body: dict[str, Any] = history.current.model_dump(mode="json")
+    body["versions"] = [v.model_dump(mode="json") for v in history.versions]
+    return body

@@ -1,0 +1,100 @@
+"""The gate use case: decide a request, answer its question, re-evaluate it; keep the audit trail.
+
+In: a validated `GateRequest` (or answers to an earlier one). Out: `Decided`: the stored audit
+record plus the in-memory pipeline result the response is built from.
+Every decision is written (with its contract, if any) before it is returned; a failed write raises
+`Unavailable` and the caller gets 503, never an unrecorded decision.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from app.domain.analysis.questions import apply_answers
+from app.domain.contracts import Contract
+from app.domain.errors import InvalidInput
+from app.domain.gate import Decision
+from app.domain.models import GateRequest
+from app.domain.pipeline import GateResult, run_gate
+from app.services.container import Services
+from app.store.records import ContractRecord, GateRecord
+
+
+@dataclass(frozen=True)
+class Decided:
+    record: GateRecord
+    result: GateResult
+
+
+def decide(
+    services: Services, request: GateRequest, *, parent_request_id: str | None = None
+) -> Decided:
+    """Run Stages 1-4 on a request and record it (and its contract) in the audit trail."""
+    result = run_gate(
+        request,
+        templates=services.templates.index(),
+        analyzer=services.analyzer,
+        policy=services.policy,
+    )
+    decision = result.decision
+    record = services.repository.save_gate_record(
+        GateRecord(
+            request=request,
+            hazard_report=result.report,
+            decision=decision.decision.value,
+            rule=decision.rule.value,
+            defer_kind=decision.defer_kind.value if decision.defer_kind else None,
+            question=decision.question,
+            triggers=[h.model_dump(mode="json") for h in decision.trigger_hazards]
+            + [u.model_dump(mode="json") for u in decision.trigger_unknowns],
+            timings=result.timings_ms,
+            analyzer=result.report.analyzer,
+            template_versions=result.contract.template_versions if result.contract else {},
+            parent_request_id=parent_request_id,
+        )
+    )
+    if result.contract is not None and decision.decision is Decision.AUTHORIZE:
+        assert record.id is not None
+        contract = services.repository.save_contract(
+            ContractRecord(
+                request_id=record.id,
+                contract=result.contract.model_dump(mode="json"),
+                template_versions=result.contract.template_versions,
+                max_attempts=services.settings.max_verify_attempts,
+            )
+        )
+        record = record.model_copy(update={"contract_id": contract.id})
+    return Decided(record=record, result=result)
+
+
+def answer(services: Services, request_id: str, answers: dict[str, Any]) -> Decided:
+    """Fold answers to a clarifying question into the request and decide it again."""
+    if not answers:
+        raise InvalidInput("give at least one answer", field="body")
+    original = services.repository.get_gate_record(request_id)
+    unknowns = original.hazard_report.unknowns if original.hazard_report else ()
+    updated = apply_answers(original.request, answers, unknowns)
+    return decide(services, updated, parent_request_id=request_id)
+
+
+def reevaluate(services: Services, request_id: str) -> Decided:
+    """Decide a stored request again against the current library (after a curator's change)."""
+    original = services.repository.get_gate_record(request_id)
+    return decide(services, original.request, parent_request_id=request_id)
+
+
+def audit_record(services: Services, request_id: str) -> dict[str, Any]:
+    """A stored decision with the decisions that followed it (answers, re-evaluations)."""
+    record = services.repository.get_gate_record(request_id)
+    children = services.repository.list_child_records(request_id)
+    body = record.model_dump(mode="json", by_alias=True)
+    body["request_id"] = record.id
+    body["followed_by"] = [child.id for child in children]
+    return body
+
+
+def contract_of(services: Services, contract_id: str) -> tuple[Contract, ContractRecord]:
+    """A stored contract, parsed back into the domain model."""
+    stored = services.repository.get_contract(contract_id)
+    return Contract.model_validate(stored.contract), stored
