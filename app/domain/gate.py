@@ -112,8 +112,9 @@ def decide(
             decision=Decision.DEFER,
             rule=Rule.R1B,
             defer_kind=DeferKind.CLARIFY,
-            question=_question_about_hazard(unclear[0]),
+            question=_question_about_hazard(unclear[0], unknowns),
             trigger_hazards=tuple(unclear),
+            trigger_unknowns=tuple(_unknowns_about(unclear[0], unknowns)),
             reason=_reason("may or may not be preventable", unclear),
         )
 
@@ -148,7 +149,7 @@ def decide(
             decision=Decision.DEFER,
             rule=Rule.R3B,
             defer_kind=DeferKind.CLARIFY,
-            question=_question_about_hazard(doubtful[0]),
+            question=_question_about_hazard(doubtful[0], unknowns),
             trigger_hazards=tuple(doubtful),
             reason=_reason("is critical and the analysis is not certain of it", doubtful),
         )
@@ -172,7 +173,18 @@ def _question_about_unknown(unknown: UnknownFact) -> str:
     return f"Before I go ahead, I need to know {unknown.description.rstrip('.?')}. Can you tell me?"
 
 
-def _question_about_hazard(hazard: HazardProposal) -> str:
+def _unknowns_about(
+    hazard: HazardProposal, unknowns: Sequence[UnknownFact]
+) -> list[UnknownFact]:
+    """The critical unknowns about an entity the hazard involves: what would settle it."""
+    involved = set(hazard.entities.values())
+    return [u for u in unknowns if u.critical and u.entity is not None and u.entity in involved]
+
+
+def _question_about_hazard(hazard: HazardProposal, unknowns: Sequence[UnknownFact]) -> str:
+    settling = _unknowns_about(hazard, unknowns)
+    if settling:
+        return _question_about_unknown(settling[0])
     return (
         f"Before I do this: {hazard.mechanism.rstrip('.')}. "
         "Can you confirm how this should be handled safely, or should I not do it?"

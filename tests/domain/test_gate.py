@@ -75,6 +75,14 @@ class TestDecide:
         assert result.defer_kind is DeferKind.CLARIFY
         assert result.question
 
+    def test_r1b_asks_the_question_of_the_unknown_that_settles_it(self) -> None:
+        unclear = hazard(preventability=Preventability.UNKNOWN)
+        about_person = unknown().model_copy(update={"entity": "person_1"})
+        result = decide([unclear], [], [about_person])
+        assert result.rule is Rule.R1B
+        assert result.question == "How old is the guest?"
+        assert result.trigger_unknowns == (about_person,)
+
     def test_unbound_hazard_defers_to_extend_library_with_r2(self) -> None:
         result = decide([], [hazard(hazard_class="laser_pointer")], [])
         assert (result.rule, result.defer_kind) == (Rule.R2, DeferKind.EXTEND_LIBRARY)

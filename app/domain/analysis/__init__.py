@@ -1,0 +1,99 @@
+"""Stage 1, the Hazard Analysis Matrix: the `Analyzer` interface and the offline symbolic one.
+
+In: a `GateRequest` (command, optional scene, user and robot). Out: a `HazardReport` whose
+proposals fill the matrix's cells (task / deployment / user level x physical / psychological /
+operational / consequential) and whose unknowns say what is missing and whether it is critical.
+`SymbolicAnalyzer` is deterministic, offline and fast: it loads its knowledge (JSON data under
+`knowledge/`) once, at construction. Fails: only if the knowledge files are missing or broken
+(at construction); analysing a valid request never raises.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Protocol, runtime_checkable
+
+from app.domain.analysis.command import normalize, parse_command
+from app.domain.analysis.consequences import consequential_hazards
+from app.domain.analysis.context import Context
+from app.domain.analysis.giving import giving_hazards
+from app.domain.analysis.grounding import Grounder, apply_state_clauses
+from app.domain.analysis.handling import handling_hazards
+from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge, load_knowledge
+from app.domain.analysis.operational import operational_hazards
+from app.domain.analysis.questions import apply_answers, phrase_question, question_for
+from app.domain.analysis.scene_view import build_scene_view
+from app.domain.analysis.social import social_hazards
+from app.domain.analysis.unknowns import find_unknowns
+from app.domain.models import GateRequest, HazardReport
+
+__all__ = [
+    "Analyzer",
+    "SymbolicAnalyzer",
+    "analyze",
+    "apply_answers",
+    "phrase_question",
+    "question_for",
+]
+
+
+@runtime_checkable
+class Analyzer(Protocol):
+    """Anything that fills the Hazard Analysis Matrix for a request."""
+
+    name: str
+
+    def analyze(self, request: GateRequest) -> HazardReport:
+        """Return the hazard proposals and unknowns for one request."""
+        ...
+
+
+class SymbolicAnalyzer:
+    """The embedded, offline analyzer: a command parser, scene grounding and general rules."""
+
+    name = "symbolic"
+
+    def __init__(self, knowledge_dir: Path = KNOWLEDGE_DIR) -> None:
+        self._knowledge: Knowledge = load_knowledge(knowledge_dir)
+
+    def analyze(self, request: GateRequest) -> HazardReport:
+        """Fill the Hazard Analysis Matrix for one request.
+
+        Args:
+            request: the gate request.
+
+        Returns:
+            The `HazardReport` (proposals deduplicated per hazard class and entities).
+        """
+        knowledge = self._knowledge
+        view = build_scene_view(request, knowledge)
+        names = {n.lower() for p in view.people.values() for n in (p.id, p.name) if n}
+        names |= {n.lower() for o in view.objects.values() for n in (o.id, o.name) if n}
+        steps = parse_command(request.command, knowledge, names)
+        grounder = Grounder(view, knowledge)
+        grounded = [grounder.ground(step) for step in steps]
+        apply_state_clauses(grounder, grounded, view, knowledge)
+        ctx = Context(request=request, knowledge=knowledge, view=view, steps=grounded,
+                      text=normalize(request.command), analyzer=self.name,
+                      ambiguous_ids=frozenset(i for g in grounded for r in g.objects
+                                              if r.kind == "object" and len(r.ids) > 1
+                                              for i in r.ids))
+        giving_hazards(ctx)
+        handling_hazards(ctx)
+        social_hazards(ctx)
+        operational_hazards(ctx)
+        consequential_hazards(ctx)
+        find_unknowns(ctx)
+        return ctx.report()
+
+
+def analyze(request: GateRequest) -> HazardReport:
+    """Analyse one request with a default `SymbolicAnalyzer` (knowledge loaded once, cached).
+
+    Args:
+        request: the gate request.
+
+    Returns:
+        The `HazardReport`.
+    """
+    return SymbolicAnalyzer().analyze(request)

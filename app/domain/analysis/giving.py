@@ -1,0 +1,191 @@
+"""Physical hazards of giving, serving or bringing something to a person.
+
+In: the `Context` (grounded steps with a recipient). Out: proposals (sharp_handover,
+scald_hot_liquid, chemical_ingestion/exposure, medication_misuse, choking, allergen_exposure,
+food_safety) whose severity and preventability follow the recipient's age and condition, and the
+critical unknowns (age, allergies, whose medication) when the answer would decide. Never fails.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from app.domain.analysis.context import Context, latest
+from app.domain.analysis.grounding import GroundedStep
+from app.domain.analysis.questions import phrase_question
+from app.domain.analysis.scene_view import ObjectView, PersonView
+from app.domain.analysis.traits import Traits, traits_of
+from app.domain.models import Category, Confidence, Level, Preventability, Severity
+
+GIVING_ACTIONS = frozenset({"handover", "serve", "transport", "pour", "heat", "pick"})
+_P, _U, _X = Preventability.PREVENTABLE, Preventability.UNPREVENTABLE, Preventability.UNKNOWN
+Adder = Callable[..., None]
+_AGE_SENSITIVE = ("sharp", "hot", "toxic", "medication", "small", "alcohol")
+
+
+def giving_hazards(ctx: Context) -> None:
+    """Add the hazards of every non-negated step that hands or serves an object to a person."""
+    for grounded in ctx.steps:
+        step = grounded.step
+        if step.negated or step.action not in GIVING_ACTIONS:
+            continue
+        for person in ctx.people(grounded.recipient):
+            for referent in grounded.objects:
+                for obj in ctx.objects(referent):
+                    _give(ctx, grounded, obj, traits_of(ctx, obj, referent.mention), person)
+
+
+def _age(person: PersonView) -> tuple[str | None, Level]:
+    if person.age_group:
+        return person.age_group, person.age_level
+    if person.is_user:
+        # The person giving the command is presumed an adult; noted, never critical.
+        return "adult", Level.USER
+    return None, Level.TASK if person.virtual else Level.DEPLOYMENT
+
+
+def _give(ctx: Context, grounded: GroundedStep, obj: ObjectView, traits: Traits,
+          person: PersonView) -> None:
+    age, age_level = _age(person)
+    child = age in ("infant", "child")
+    young = person.young or age == "infant"
+    entities = {"obj": obj.id, "person": person.id}
+    who = f"{person.label} ({age.replace('_', ' ')})" if age else person.label
+    what = obj.label
+    consuming = grounded.step.action in ("serve", "pour", "heat") or ctx.cue("consumption")
+    if age is None and any(traits.has(t) for t in _AGE_SENSITIVE):
+        ctx.unknown("age_group", f"the age of {person.label}", critical=True,
+                    why=f"{what} is only safe to give to someone old enough to handle it",
+                    entity=person.id, question=phrase_question("age_group", person.label))
+
+    def add(trait: str, hazard: str, mechanism: str, severity: Severity,
+            preventability: Preventability, category: Category = Category.PHYSICAL,
+            confidence: Confidence = Confidence.CERTAIN) -> None:
+        level = latest(traits.level(trait), age_level if age or trait != "allergen" else
+                       Level.TASK)
+        ctx.add(level, category, hazard, mechanism, entities, severity, preventability,
+                confidence)
+
+    if traits.has("sharp"):
+        if child:
+            add("sharp", "sharp_handover", f"Giving {what} to {who}, a child who "
+                "cannot handle it safely, risks a deep cut.", Severity.CRITICAL, _U)
+        elif age is None:
+            add("sharp", "sharp_handover", f"Giving {what} to {who}, whose age is "
+                "not known, may put it in a child's hands.", Severity.HIGH, _X)
+        else:
+            add("sharp", "sharp_handover", f"Handing {what} to {who}: the blade "
+                "must point away and be offered handle first.", Severity.MODERATE, _P)
+    if traits.has("hot"):
+        confidence = traits.hot_confidence
+        if child:
+            add("hot", "scald_hot_liquid", f"Giving {what}, which is hot, to {who}: a child "
+                "cannot be trusted to hold a hot drink and a spill scalds.",
+                Severity.CRITICAL if young else Severity.HIGH, _U, confidence=confidence)
+        elif age is None:
+            add("hot", "scald_hot_liquid", f"Giving {what}, which is hot, to {who}, whose age "
+                "is not known, could scald a child.", Severity.HIGH, _X, confidence=confidence)
+        else:
+            add("hot", "scald_hot_liquid", f"Carrying and handing {what}, which is hot, to "
+                f"{who} risks a scald if it spills.", Severity.MODERATE, _P, confidence=confidence)
+    if traits.has("toxic") and not traits.has("medication"):
+        if consuming or obj.has("drink_container") or traits.has("drink"):
+            add("toxic", "chemical_ingestion", f"Serving {what}, a toxic substance, to {who} "
+                "as food or drink can poison them.", Severity.CRITICAL, _U)
+        elif child or person.cognitive_state == "impaired":
+            add("toxic", "chemical_exposure", f"Giving {what}, which is toxic, to {who}, who "
+                "cannot be expected to handle it safely, risks poisoning or burns.",
+                Severity.CRITICAL, _U)
+        elif age is None:
+            add("toxic", "chemical_exposure", f"Giving {what}, which is toxic, to {who}, whose age "
+                "is not known, may put a chemical in a child's hands.", Severity.HIGH, _X)
+        else:
+            add("toxic", "chemical_exposure", f"Handing {what}, which is toxic, to {who}: it must "
+                "stay closed and upright.", Severity.LOW, _P)
+    if traits.has("medication"):
+        _medication(ctx, obj, what, person, who, child, add)
+    if traits.has("small") and not traits.has("medication"):
+        if young:
+            add("small", "choking", f"Giving {what}, small enough to swallow, to {who} is a "
+                "choking hazard.", Severity.CRITICAL, _U)
+        elif child:
+            add("small", "choking", f"Giving {what} to {who}: small pieces can choke a "
+                "child; supervision needed.", Severity.MODERATE, _P)
+        elif age is None:
+            add("small", "choking", f"Giving {what} to {who}, whose age is not known, could "
+                "choke a small child.", Severity.HIGH, _X)
+    if traits.has("alcohol"):
+        if age in ("infant", "child", "teen"):
+            add("alcohol", "chemical_ingestion", f"Serving alcohol ({what}) to {who}, a "
+                "minor.", Severity.HIGH, _U)
+        elif age is None:
+            add("alcohol", "chemical_ingestion", f"Serving alcohol ({what}) to {who}, whose "
+                "age is not known.", Severity.HIGH, _X)
+    if (traits.has("raw") or obj.properties.get("spoiled") or obj.properties.get("expired")
+            or (traits.has("infant_unsafe") and age == "infant")):
+        add("food", "food_safety", f"Serving {what} to {who}: it is spoiled, raw or unsafe "
+            "for them and can make them ill.", Severity.HIGH, _U,
+            category=Category.CONSEQUENTIAL)
+    if traits.has("allergen") and traits.allergen:
+        _allergen(ctx, traits.allergen, what, person, who, add)
+
+
+def _medication(ctx: Context, obj: ObjectView, what: str, person: PersonView, who: str,
+                child: bool, add: Adder) -> None:
+    owner = _owner_of(ctx, obj, person)
+    if owner == "other":
+        add("medication", "medication_misuse", f"Giving {what}, someone else's medication, "
+            f"to {who}.", Severity.CRITICAL, _U)
+    elif child and owner != "self":
+        add("medication", "medication_misuse", f"Giving medication ({what}) to {who}, a "
+            "child, risks poisoning.", Severity.CRITICAL, _U)
+    elif owner is None:
+        add("medication", "medication_misuse", f"Giving medication ({what}) to {who} when it "
+            "is not known to be theirs.", Severity.HIGH, _X)
+        ctx.unknown("medication_owner", f"whom {what} is prescribed for", critical=True,
+                    why="medication given to anyone but the person it is for can harm them",
+                    entity=obj.id, question=phrase_question("medication_owner", what,
+                                                            person.label))
+    else:
+        add("medication", "medication_misuse", f"Giving {who} their medication ({what}): "
+            "the right dose at the right time only.", Severity.MODERATE, _P)
+
+
+def _owner_of(ctx: Context, obj: ObjectView, person: PersonView) -> str | None:
+    """"self" if the medication is the recipient's, "other" if someone else's, else None."""
+    phrase = None
+    for grounded in ctx.steps:
+        for referent in grounded.objects:
+            if obj.id in referent.ids and referent.mention.owner:
+                phrase = referent.mention.owner
+    phrase = phrase or obj.owner
+    if not phrase:
+        return None
+    names = {person.id.lower(), (person.role or "").lower(), (person.name or "").lower()}
+    if phrase in ("her", "him", "them", "their") or phrase in names:
+        return "self"
+    if phrase in ("me", "my") and person.is_user:
+        return "self"
+    return "other"
+
+
+def _allergen(ctx: Context, group: str, what: str, person: PersonView, who: str,
+              add: Adder) -> None:
+    if person.allergies is None:
+        critical = not person.is_user
+        ctx.unknown("allergies", f"whether {person.label} is allergic to {group.replace('_', ' ')}",
+                    critical=critical,
+                    why=f"{what} contains a common allergen ({group.replace('_', ' ')})"
+                    + ("" if critical else "; the user chose it for themselves"),
+                    entity=person.id, question=phrase_question("allergies", person.label,
+                                                               group.replace("_", " ")))
+        add("allergen", "allergen_exposure", f"Serving {what} (contains "
+            f"{group.replace('_', ' ')}) to {who}, whose allergies are not known.",
+            Severity.MODERATE, _P)
+        return
+    words = {w for a in person.allergies for w in a.replace("_", " ").split()} | set(
+        person.allergies)
+    allergic = any(ctx.knowledge.allergen_words.get(w) == group or w == group for w in words)
+    if allergic:
+        add("allergen", "allergen_exposure", f"Serving {what} to {who}, who is allergic to "
+            f"{group.replace('_', ' ')}.", Severity.CRITICAL, _U)

@@ -1,0 +1,166 @@
+"""Operational hazards: payload, skills, sensors, reach, routes, speed, grounding.
+
+In: the `Context` (the robot profile may be absent: then nothing about the robot is claimed).
+Out: operational proposals at the user level (robot capabilities) or deployment level (scene).
+Skills and sensors are only checked when the request lists them; a missing mass is reported as
+a non-critical unknown rather than guessed. Never fails.
+"""
+
+from __future__ import annotations
+
+from app.domain.analysis.context import Context
+from app.domain.analysis.grounding import GroundedStep
+from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.traits import traits_of
+from app.domain.models import Category, Confidence, Level, Preventability, Severity
+
+_P, _U = Preventability.PREVENTABLE, Preventability.UNPREVENTABLE
+_S = Severity
+_OPS = Category.OPERATIONAL
+_LIFTING = frozenset({"transport", "handover", "serve", "pick", "place", "remove", "throw",
+                      "pour"})
+_PERSON_LIFT_VERBS = frozenset({"lift", "lift up", "transfer", "carry", "pick up", "reposition"})
+_PERSON_MASS_KG = {"infant": 8.0, "child": 25.0, "teen": 55.0, "adult": 70.0,
+                   "older_adult": 65.0}
+_RISKY_TRAITS = ("sharp", "hot", "toxic", "heavy", "medication", "fragile", "heat_source",
+                 "dangerous_in_use")
+
+
+def operational_hazards(ctx: Context) -> None:
+    """Add the operational hazards of every non-negated step."""
+    robot = ctx.request.robot
+    for grounded in ctx.steps:
+        step = grounded.step
+        if step.negated or step.action is None:
+            continue
+        if robot is not None and robot.payload_kg is not None:
+            _payload(ctx, grounded, robot.payload_kg)
+        if robot is not None and robot.skills is not None:
+            _skills(ctx, grounded, robot.skills)
+        if robot is not None and robot.sensors is not None:
+            _sensors(ctx, grounded, robot.sensors)
+        _reach_and_route(ctx, grounded)
+        if ctx.cue("hurry"):
+            for person in _people_on_way(ctx, grounded):
+                level = Level.TASK if person.virtual else Level.DEPLOYMENT
+                ctx.add(level, _OPS, "speed_near_people", f"Hurrying near {person.label}.",
+                        {"person": person.id}, _S.MODERATE, _P)
+
+
+def _payload(ctx: Context, grounded: GroundedStep, payload: float) -> None:
+    if grounded.step.action in _LIFTING:
+        for ref in grounded.objects:
+            for obj in ctx.objects(ref):
+                if obj.mass_kg is None:
+                    if obj.has("furniture") or obj.has("heavy"):
+                        ctx.unknown("mass_kg", f"the mass of {obj.label}", critical=False,
+                                    why="it may exceed the robot's payload", entity=obj.id,
+                                    question=f"How heavy is {obj.label}?")
+                elif obj.mass_kg > payload and (obj.mass_given or obj.mass_kg > 2 * payload):
+                    ctx.add(Level.USER, _OPS, "payload_exceeded", f"{obj.label} weighs about "
+                            f"{obj.mass_kg:g} kg, more than the robot's {payload:g} kg payload: "
+                            "it may drop it.", {"obj": obj.id}, _S.HIGH, _U)
+                elif obj.mass_kg > payload:
+                    # Only a typical mass for its kind: this one may be lighter; the contract's
+                    # load check decides at run time.
+                    ctx.add(Level.USER, _OPS, "payload_exceeded", f"{obj.label} typically "
+                            f"weighs about {obj.mass_kg:g} kg, near or over the robot's "
+                            f"{payload:g} kg payload.", {"obj": obj.id}, _S.MODERATE, _P,
+                            Confidence.UNCERTAIN)
+                    ctx.unknown("mass_kg", f"the mass of {obj.label}", critical=False,
+                                why="its kind is often heavier than the robot's payload",
+                                entity=obj.id, question=f"How heavy is {obj.label}?")
+    if grounded.step.verb in _PERSON_LIFT_VERBS or grounded.step.action == "assist":
+        for ref in grounded.objects:
+            for person in ctx.people(ref):
+                if grounded.step.verb not in _PERSON_LIFT_VERBS:
+                    continue
+                mass = person.properties.get("mass_kg") or _PERSON_MASS_KG.get(
+                    person.age_group or "adult", 70.0)
+                if float(mass) > payload:
+                    ctx.add(Level.USER, _OPS, "payload_exceeded", f"Lifting {person.label} "
+                            f"(about {float(mass):g} kg) is beyond the robot's {payload:g} kg "
+                            "payload.", {"person": person.id}, _S.CRITICAL, _U)
+
+
+def _canonical(names: list[str], aliases: dict[str, str]) -> set[str]:
+    out = set()
+    for name in names:
+        key = name.lower().replace("-", "_").replace(" ", "_")
+        out |= {key, aliases.get(key, key)}
+    return out
+
+
+def _risky(ctx: Context, grounded: GroundedStep) -> bool:
+    if grounded.recipient is not None:
+        return True
+    return any(traits_of(ctx, o, r.mention).has(t) for r in grounded.objects
+               for o in ctx.objects(r) for t in _RISKY_TRAITS)
+
+
+def _skills(ctx: Context, grounded: GroundedStep, skills: list[str]) -> None:
+    have = _canonical(skills, ctx.knowledge.skill_aliases)
+    action = grounded.step.action or ""
+    first = next((i for r in grounded.objects for i in r.ids), None)
+    for group in ctx.knowledge.verb_skills.get(action, ()):
+        if have.isdisjoint(group):
+            risky = _risky(ctx, grounded)
+            ctx.add(Level.USER, _OPS, "missing_skill", f"'{grounded.step.text}' needs the "
+                    f"{' or '.join(group)} skill, which the robot does not list.",
+                    {"obj": first}, _S.HIGH if risky else _S.MODERATE, _U)
+
+
+def _sensors(ctx: Context, grounded: GroundedStep, sensors: list[str]) -> None:
+    have = _canonical(sensors, ctx.knowledge.sensor_aliases)
+    action = grounded.step.action or ""
+    for group in ctx.knowledge.verb_sensors.get(action, ()):
+        if have.isdisjoint(group) and have.isdisjoint(
+                {ctx.knowledge.sensor_aliases.get(g, g) for g in group}):
+            ctx.add(Level.USER, _OPS, "missing_sensor", f"'{grounded.step.text}' needs a "
+                    f"{group[0].replace('_', ' ')}, which the robot does not list.", {},
+                    _S.MODERATE, _U)
+    moving = action in ("navigate", "transport", "handover", "serve")
+    if moving and ctx.view.real_people() and have.isdisjoint({"lidar", "camera"}):
+        ctx.add(Level.USER, _OPS, "missing_sensor", "Moving among people without a camera or "
+                "lidar to see them.", {}, _S.HIGH, _U)
+
+
+def _reach_and_route(ctx: Context, grounded: GroundedStep) -> None:
+    action = grounded.step.action or ""
+    for ref in grounded.objects:
+        for obj in ctx.objects(ref):
+            if action in _LIFTING and not obj.virtual:
+                record = ctx.knowledge.ai2thor_types.get(obj.type)
+                fixed = obj.has("fixed") or (record is not None and not record.get(
+                    "pickupable") and not record.get("moveable"))
+                if fixed and action != "pour":
+                    ctx.add(Level.DEPLOYMENT, _OPS, "non_manipulable", f"{obj.label} is a "
+                            "fixture the robot cannot pick up or carry.", {"obj": obj.id},
+                            _S.MODERATE, _U)
+            high = {"top", "shelf"} <= obj.place_words or "high" in obj.place_words
+            if obj.properties.get("elevated") or high:
+                ctx.add(Level.DEPLOYMENT, _OPS, "reach_limit", f"{obj.label} sits high up, "
+                        "near the limit of the robot's reach.", {"obj": obj.id}, _S.LOW, _P)
+            if len(ref.ids) > 1:
+                ctx.add(Level.DEPLOYMENT, _OPS, "object_grounding", f"'{ref.mention.text}' "
+                        f"matches {len(ref.ids)} objects.", {"obj": ref.ids[0]}, _S.LOW, _P)
+    destination = grounded.destination
+    if destination is not None and destination.kind == "room" and ctx.view.rooms:
+        room = destination.ids[0]
+        start = ctx.view.robot_room
+        route = ctx.rooms_between(start, room)
+        unknown_room = room not in ctx.view.rooms
+        unreachable = bool(ctx.view.connections) and start and len(route) == 2 and not any(
+            {start, room} == set(c) for c in ctx.view.connections) and start != room
+        if unknown_room or unreachable:
+            ctx.add(Level.DEPLOYMENT, _OPS, "unreachable_location", f"No known route to the "
+                    f"{room.replace('_', ' ')}.", {"room": room}, _S.MODERATE, _U)
+
+
+def _people_on_way(ctx: Context, grounded: GroundedStep) -> list[PersonView]:
+    rooms = {r.ids[0] for r in (grounded.destination, grounded.path) if r and r.kind == "room"}
+    rooms |= {p.room for p in ctx.people(grounded.recipient) if p.room}
+    found = [p for room in rooms for p in ctx.view.people_in(room)]
+    found += [p for r in (*grounded.objects, grounded.recipient, grounded.target)
+              for p in ctx.people(r) if not p.is_user]
+    return list({p.id: p for p in found}.values())

@@ -1,0 +1,164 @@
+"""Psychological hazards: recording, surveillance, startling, intimidation, dignity, distress.
+
+In: the `Context`. Out: psychological proposals. Covert recording, recording in bedrooms and
+bathrooms or of sleeping people, scaring and intimidating are the commanded harm itself
+(unpreventable); open, consented or caring observation is preventable. Discarding someone
+else's belongings asks first (unknown preventability). Never fails.
+"""
+
+from __future__ import annotations
+
+from app.domain.analysis.context import Context
+from app.domain.analysis.grounding import GroundedStep
+from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.traits import traits_of
+from app.domain.models import Category, Level, Preventability, Severity
+
+_P, _U, _X = Preventability.PREVENTABLE, Preventability.UNPREVENTABLE, Preventability.UNKNOWN
+_S = Severity
+_PSY = Category.PSYCHOLOGICAL
+_COVERT_VERBS = frozenset({"spy", "spy on", "snoop", "snoop on", "eavesdrop", "eavesdrop on",
+                           "listen in", "listen in on", "stalk", "tail", "read", "go through",
+                           "report on", "log"})
+_INTIMATE_VERBS = frozenset({"undress", "bathe", "shower", "toilet", "change", "dress"})
+_TOUCH_VERBS = frozenset({"touch", "kiss", "hug", "tickle", "massage"})
+_HARM_VERBS = frozenset({"hit", "strike", "poke", "trip", "kick", "restrain"})
+_DEMEAN_VERBS = frozenset({"mock", "insult", "humiliate", "laugh at", "embarrass", "tease"})
+_NOISY_VERBS = frozenset({"vacuum", "hoover", "blend", "blast", "play music"})
+_PRIVATE_ROOMS = ("bedroom", "bathroom", "toilet", "nursery", "shower", "restroom", "bath",
+                  "undress", "changing", "naked", "showers", "showering", "bathing")
+
+
+def social_hazards(ctx: Context) -> None:
+    """Add the psychological hazards of every non-negated step."""
+    for grounded in ctx.steps:
+        step = grounded.step
+        if step.negated or step.action is None:
+            continue
+        action, verb = step.action, step.verb or ""
+        if action in ("record", "watch") or (verb == "follow" and ctx.cue("covert")):
+            _observe(ctx, grounded)
+        elif action == "wake":
+            for person in _people(ctx, grounded):
+                ctx.add(_lvl(person), _PSY, "startling", f"Waking {person.label}: approach "
+                        "slowly and speak before touching.", {"person": person.id},
+                        _S.MODERATE if person.frail else _S.LOW, _P)
+        elif action == "scare":
+            for person in _people(ctx, grounded):
+                fragile = person.frail or person.asleep or person.child
+                ctx.add(_lvl(person), _PSY, "startling", f"Deliberately startling "
+                        f"{person.label}.", {"person": person.id},
+                        _S.CRITICAL if fragile else _S.HIGH, _U)
+        elif action == "intimidate":
+            for person in _people(ctx, grounded):
+                if verb in _HARM_VERBS:
+                    ctx.add(Level.TASK, Category.PHYSICAL, "collision_person", f"Striking or "
+                            f"restraining {person.label}.", {"person": person.id},
+                            _S.CRITICAL, _U)
+                elif verb in _DEMEAN_VERBS:
+                    ctx.add(Level.TASK, _PSY, "dignity_violation", f"Mocking or humiliating "
+                            f"{person.label}.", {"person": person.id}, _S.HIGH, _U)
+                else:
+                    ctx.add(Level.TASK, _PSY, "intimidation", f"Threatening, chasing or "
+                            f"cornering {person.label}.", {"person": person.id}, _S.HIGH, _U)
+        elif action == "assist":
+            _assist(ctx, grounded, verb)
+        if action in ("remove", "break", "throw"):
+            _belongings(ctx, grounded)
+        if verb in _NOISY_VERBS or (action in ("switch_on", "clean", "play") and any(
+                o.has("noisy") for r in grounded.objects for o in ctx.objects(r))):
+            _noise(ctx, grounded)
+
+
+def _lvl(person: PersonView) -> Level:
+    if person.is_user:
+        return Level.USER  # what is known of the user comes from the user profile
+    return Level.TASK if person.virtual else Level.DEPLOYMENT
+
+
+def _people(ctx: Context, grounded: GroundedStep) -> list[PersonView]:
+    found = [p for r in (*grounded.objects, grounded.target, grounded.recipient)
+             for p in ctx.people(r)]
+    for ref in (*grounded.objects, grounded.destination):
+        if ref is not None and ref.kind == "room":
+            found += ctx.view.people_in(ref.ids[0])
+    return list({p.id: p for p in found}.values())
+
+
+def _observe(ctx: Context, grounded: GroundedStep) -> None:
+    step = grounded.step
+    verb = step.verb or ""
+    covert = ctx.cue("covert") or verb in _COVERT_VERBS
+    record = step.action == "record"
+    people = _people(ctx, grounded)
+    for ref in grounded.objects:
+        for obj in ctx.objects(ref):
+            owner = ref.mention.owner
+            if verb in ("read", "go through") and (obj.has("personal") or obj.has(
+                    "sentimental")) and owner not in (None, "me", "my"):
+                ctx.add(Level.TASK, _PSY, "surveillance", f"Reading or going through "
+                        f"{owner}'s {obj.type}.", {"obj": obj.id}, _S.HIGH, _U)
+    for person in people:
+        room_words = f"{person.room or ''} {step.text} {step.condition or ''}"
+        private = any(word in room_words for word in _PRIVATE_ROOMS)
+        consents = person.properties.get("consents") is True
+        entities = {"person": person.id, "room": person.room}
+        hazard = "privacy_intrusion" if record else "surveillance"
+        if covert or (record and (private or person.asleep)):
+            severity = _S.CRITICAL if (person.child and private) else _S.HIGH
+            doing = "Recording" if record else "Watching"
+            how = " covertly" if covert else ""
+            where = " in a private room" if private else ""
+            when = " while asleep" if person.asleep else ""
+            ctx.add(Level.TASK if covert else _lvl(person), _PSY, hazard,
+                    f"{doing} {person.label}{how}{where}{when}.", entities, severity, _U)
+        elif consents:
+            ctx.add(_lvl(person), _PSY, hazard, f"Recording {person.label}, who agreed.",
+                    entities, _S.LOW, _P)
+        else:
+            ctx.add(_lvl(person), _PSY, hazard, f"{'Recording' if record else 'Watching'} "
+                    f"{person.label}: only openly and with their agreement.", entities,
+                    _S.MODERATE if record else _S.LOW, _P)
+
+
+def _assist(ctx: Context, grounded: GroundedStep, verb: str) -> None:
+    covert = ctx.cue("covert")
+    for person in _people(ctx, grounded):
+        if verb in _INTIMATE_VERBS:
+            ctx.add(_lvl(person), _PSY, "dignity_violation", f"Intimate care for "
+                    f"{person.label}: with their consent and privacy only.",
+                    {"person": person.id}, _S.HIGH if covert else _S.MODERATE,
+                    _U if covert else _P)
+        elif verb in _TOUCH_VERBS:
+            unaware = covert or person.asleep
+            ctx.add(_lvl(person), _PSY, "dignity_violation", f"Touching {person.label}"
+                    f"{' without their knowledge' if unaware else ''}.", {"person": person.id},
+                    _S.HIGH if unaware else _S.LOW, _U if unaware else _P)
+
+
+def _belongings(ctx: Context, grounded: GroundedStep) -> None:
+    for ref in grounded.objects:
+        for obj in ctx.objects(ref):
+            traits = traits_of(ctx, obj, ref.mention)
+            if not (traits.has("sentimental") or traits.has("personal") or traits.has("toy")):
+                continue
+            owner = ref.mention.owner or obj.owner
+            if owner and owner not in ("me", "my", "user"):
+                ctx.add(Level.TASK, _PSY, "emotional_distress", f"Discarding or destroying "
+                        f"{owner}'s {obj.type}, which they may treasure.", {"obj": obj.id},
+                        _S.HIGH, _X)
+            elif traits.has("sentimental"):
+                ctx.add(Level.TASK, _PSY, "emotional_distress", f"Discarding {obj.label}, "
+                        "which may be of sentimental value.", {"obj": obj.id}, _S.LOW, _P)
+
+
+def _noise(ctx: Context, grounded: GroundedStep) -> None:
+    rooms = {o.room for r in grounded.objects for o in ctx.objects(r) if o.room}
+    rooms |= {r.ids[0] for r in (grounded.destination, *grounded.objects) if r and
+              r.kind == "room"}
+    for room in rooms:
+        for person in ctx.view.people_in(room):
+            if person.asleep:
+                ctx.add(Level.DEPLOYMENT, _PSY, "sleep_disturbance", f"Making noise in the "
+                        f"{room} where {person.label} is asleep.", {"person": person.id,
+                        "room": room}, _S.MODERATE, _P)

@@ -1,0 +1,103 @@
+"""Unknowns the analyzer finds for itself, and the caller's own `user.unknowns`.
+
+In: the `Context` after the hazard rules ran. Out: `UnknownFact`s: the contents of a container
+someone will drink from or handle; a phrase matching a dangerous and a harmless object; an
+object the command names that the given scene lacks; and the caller's listed unknowns, critical
+only when a rule found they decide (e.g. "allergies" when an allergen is served to the user).
+Never fails.
+"""
+
+from __future__ import annotations
+
+from app.domain.analysis.context import Context
+from app.domain.analysis.grounding import Referent
+from app.domain.analysis.questions import phrase_question
+from app.domain.analysis.traits import traits_of
+
+_CONSUMING = frozenset({"serve", "pour"})
+_DELIVERING = frozenset({"handover", "serve", "transport", "pour"})
+_DANGER = ("toxic", "sharp", "hot", "medication", "heavy", "dangerous_in_use", "heat_source")
+
+
+def find_unknowns(ctx: Context) -> None:
+    """Add the unknowns the command, scene and caller leave open."""
+    toxic_around = any(o.has("toxic") for o in ctx.view.objects.values() if not o.virtual)
+    for grounded in ctx.steps:
+        step = grounded.step
+        if step.negated or step.action is None:
+            continue
+        recipients = ctx.people(grounded.recipient)
+        for ref in grounded.objects:
+            _ambiguity(ctx, ref)
+            if ref.virtual and ctx.view.scene_given and ctx.view.objects and ref.kind == "object":
+                ctx.unknown("location", f"where {ref.mention.text} is", critical=False,
+                            why="the scene does not list it; the robot must search",
+                            entity=ref.ids[0] if ref.ids else None,
+                            question=f"Where is {ref.mention.text}?")
+            if step.action not in _DELIVERING:
+                continue
+            for obj in ctx.objects(ref):
+                traits = traits_of(ctx, obj, ref.mention)
+                if not obj.has("container") or traits.substance or obj.properties.get(
+                        "empty") or not (obj.has("drink_container") or recipients):
+                    continue
+                others = [p for p in recipients if not p.is_user]
+                consuming = step.action in _CONSUMING or ctx.cue("consumption")
+                critical = bool(others) and (consuming or toxic_around or
+                                             not ctx.view.scene_given)
+                ctx.unknown(
+                    "contents", f"what {obj.label} holds", critical=critical,
+                    why=("someone may drink or handle it, and "
+                         + ("a toxic product is in the home" if toxic_around else
+                            "nothing says what is inside")) if critical else
+                    "the user will see it themselves; not decisive",
+                    entity=obj.id, question=phrase_question("contents", _the(ref, obj.label)))
+    _caller_unknowns(ctx)
+
+
+def _the(ref: Referent, label: str) -> str:
+    text = ref.mention.text
+    return text if text.startswith(("the ", "my ", "his ", "her ")) else f"the {label}"
+
+
+def _ambiguity(ctx: Context, ref: Referent) -> None:
+    if ref.kind != "object" or len(ref.ids) < 2:
+        return
+    views = [ctx.view.objects[i] for i in ref.ids if i in ctx.view.objects]
+    profiles = {tuple(sorted(t for t in _DANGER if traits_of(ctx, v, ref.mention).has(t)))
+                for v in views}
+    labels = ", ".join(v.label for v in views[:4])
+    critical = len(profiles) > 1
+    ctx.unknown("referent", f"which of {labels} '{ref.mention.text}' means",
+                critical=critical,
+                why=("the candidates differ in danger: one is harmful, another is not"
+                     if critical else "the candidates are alike; any one will do"),
+                entity="|".join(ref.ids),
+                question=phrase_question("referent", ref.mention.head, " or ".join(
+                    v.label for v in views[:4])))
+
+
+def _caller_unknowns(ctx: Context) -> None:
+    user = ctx.request.user
+    if user is None:
+        return
+    found = {u.attribute for u in ctx.unknowns if u.critical}
+    user_id = ctx.view.user.id if ctx.view.user else None
+    served_to_user = [p for p in ctx.proposals if p.entities.get("person") == user_id]
+    for text in user.unknowns:
+        words = text.lower()
+        attribute = ("allergies" if "allerg" in words else "age_group" if "age" in words
+                     else "mobility" if "mobil" in words or "walk" in words else
+                     "contents" if "content" in words else words.replace(" ", "_"))
+        decisive = attribute in found or (
+            attribute == "allergies" and any(p.hazard_class == "allergen_exposure"
+                                             for p in served_to_user)) or (
+            attribute == "age_group" and any(p.hazard_class in (
+                "sharp_handover", "scald_hot_liquid", "medication_misuse", "choking")
+                for p in served_to_user) and not (ctx.view.user and ctx.view.user.age_group))
+        ctx.unknown(attribute, text, critical=decisive,
+                    why="the caller listed it as unknown" + (
+                        ", and it decides whether the task is safe" if decisive else
+                        "; no hazard found depends on it"),
+                    entity=user_id, question=phrase_question(attribute, "the user")
+                    if decisive else None)
