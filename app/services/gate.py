@@ -8,6 +8,7 @@ Every decision is written (with its contract, if any) before it is returned; a f
 
 from __future__ import annotations
 
+import uuid
 from dataclasses import dataclass
 from typing import Any
 
@@ -38,8 +39,19 @@ def decide(
         policy=services.policy,
     )
     decision = result.decision
-    record = services.repository.save_gate_record(
+    request_id = uuid.uuid4().hex
+    contract = None
+    if result.contract is not None and decision.decision is Decision.AUTHORIZE:
+        contract = ContractRecord(
+            id=uuid.uuid4().hex,
+            request_id=request_id,
+            contract=result.contract.model_dump(mode="json"),
+            template_versions=result.contract.template_versions,
+            max_attempts=services.settings.max_verify_attempts,
+        )
+    record, _ = services.repository.save_gate_decision(
         GateRecord(
+            id=request_id,
             request=request,
             hazard_report=result.report,
             decision=decision.decision.value,
@@ -52,19 +64,9 @@ def decide(
             analyzer=result.report.analyzer,
             template_versions=result.contract.template_versions if result.contract else {},
             parent_request_id=parent_request_id,
-        )
+        ),
+        contract,
     )
-    if result.contract is not None and decision.decision is Decision.AUTHORIZE:
-        assert record.id is not None
-        contract = services.repository.save_contract(
-            ContractRecord(
-                request_id=record.id,
-                contract=result.contract.model_dump(mode="json"),
-                template_versions=result.contract.template_versions,
-                max_attempts=services.settings.max_verify_attempts,
-            )
-        )
-        record = record.model_copy(update={"contract_id": contract.id})
     return Decided(record=record, result=result)
 
 

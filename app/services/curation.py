@@ -1,0 +1,140 @@
+"""Template curation: validate, create, revise, activate and deprecate library templates.
+
+In: a template document (decoded JSON) from a curator, with the curator's name as author. Out:
+the stored template with the validation's warnings (`Curated`), or the validation verdict alone.
+Validation runs before anything is stored, so bad input changes nothing. The gate's template
+cache is refreshed after every status change and every new version of an active template.
+Fails: `TemplateInvalid` (422, `errors` lists each problem with its field and position),
+`NotFound` (404), `Conflict` (409: the id exists, or activating would contradict the class's
+other active templates), `Unavailable` (503).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from app.domain.errors import Conflict, TemplateInvalid
+from app.domain.models import HazardTemplate, TemplateStatus
+from app.domain.template_validation import (
+    TemplateIssue,
+    TemplateValidation,
+    class_conflict,
+    validate_template,
+)
+from app.services.container import Services
+
+
+@dataclass(frozen=True)
+class Curated:
+    """A stored template and what validation warned about."""
+
+    template: HazardTemplate
+    warnings: tuple[TemplateIssue, ...] = ()
+
+
+def validate(services: Services, document: object) -> TemplateValidation:
+    """Validate a document against the schema, the vocabulary, Z3 and the stored library."""
+    return validate_template(
+        document,
+        library=services.repository.list_templates(),
+        timeout_ms=services.settings.solver_timeout_ms,
+    )
+
+
+def _refuse(errors: list[dict[str, Any]], warnings: tuple[TemplateIssue, ...] = ()) -> None:
+    first = errors[0]
+    where = first["field"]
+    if first.get("line") is not None:
+        where += f" (line {first['line']}, column {first['column']})"
+    count = f"{len(errors)} problems" if len(errors) > 1 else "a problem"
+    raise TemplateInvalid(
+        f"the template has {count}; first at {where}: {first['message']}",
+        errors=errors,
+        warnings=[w.as_dict() for w in warnings],
+    )
+
+
+def _valid_template(validation: TemplateValidation) -> HazardTemplate:
+    if validation.template is None or validation.errors:
+        _refuse([issue.as_dict() for issue in validation.errors], validation.warnings)
+    assert validation.template is not None
+    return validation.template
+
+
+def create(services: Services, document: object, author: str) -> Curated:
+    """Validate a new template and store it as a draft at version 1.
+
+    Raises:
+        TemplateInvalid: the document fails validation (nothing is stored).
+        Conflict: a template with this id exists.
+    """
+    validation = validate(services, document)
+    template = _valid_template(validation)
+    stored = services.repository.create_user_template(template, author)
+    return Curated(stored, validation.warnings)
+
+
+def revise(services: Services, template_id: str, document: object, author: str) -> Curated:
+    """Validate a revision and store it as the template's next version (older ones are kept).
+
+    Raises:
+        NotFound: no such template.
+        TemplateInvalid: the document fails validation or names another id.
+    """
+    services.repository.get_template(template_id)
+    validation = validate(services, document)
+    template = _valid_template(validation)
+    if template.id != template_id:
+        _refuse([{"field": "body.id", "code": "id",
+                  "message": f"the document's id {template.id!r} is not {template_id!r}"}])
+    stored = services.repository.add_template_version(template_id, template, author)
+    if stored.status is TemplateStatus.ACTIVE:
+        services.templates.refresh()
+    return Curated(stored, validation.warnings)
+
+
+def activate(services: Services, template_id: str) -> HazardTemplate:
+    """Make a template active, so that the gate binds it from now on.
+
+    Raises:
+        NotFound: no such template.
+        Conflict: its invariants contradict those of the class's other active templates.
+    """
+    template = services.repository.get_template(template_id)
+    others = [
+        other
+        for other in services.templates.index().for_class(template.hazard_class)
+        if other.id != template_id
+    ]
+    conflict = class_conflict(template, others, services.settings.solver_timeout_ms)
+    if conflict is not None:
+        raise Conflict(conflict.message, field=conflict.field, code=conflict.code)
+    stored = services.repository.set_template_status(template_id, TemplateStatus.ACTIVE)
+    services.templates.refresh()
+    return stored
+
+
+def deprecate(services: Services, template_id: str) -> HazardTemplate:
+    """Retire a template: the gate stops binding it; its versions stay readable.
+
+    Raises:
+        NotFound: no such template.
+    """
+    stored = services.repository.set_template_status(template_id, TemplateStatus.DEPRECATED)
+    services.templates.refresh()
+    return stored
+
+
+def search(templates: list[HazardTemplate], text: str | None) -> list[HazardTemplate]:
+    """The templates whose id, name, class or description contain every word of `text`."""
+    words = (text or "").lower().split()
+    if not words:
+        return templates
+
+    def haystack(template: HazardTemplate) -> str:
+        return " ".join(
+            (template.id, template.name, template.hazard_class, template.description)
+        ).lower()
+
+    return [t for t in templates if all(word in haystack(t) for word in words)]

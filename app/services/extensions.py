@@ -1,0 +1,133 @@
+"""The library-extension loop: requests waiting for a template, and deciding them again.
+
+In: the audit trail. A request is waiting when the latest decision of its chain (the request,
+then its answers and re-evaluations) is a deferral with `extend_library`; what it waits for are
+that decision's unbound hazards. Out: waiting requests grouped by hazard class (with the active
+templates now covering the class and a template skeleton), and new decisions from re-evaluation,
+which runs the normal pipeline against the current library and links the new record to the one
+it re-decides. Fails: `NotFound` (404), `Conflict` (409: the request is not waiting, or no
+active template covers the class), `Unavailable` (503).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from pydantic import ValidationError
+
+from app.domain.errors import Conflict
+from app.domain.models import HazardProposal
+from app.domain.template_validation import suggest_template
+from app.services import gate
+from app.services.container import Services
+from app.services.gate import Decided
+from app.store.records import GateRecord
+
+PENDING_LIMIT = 1000
+
+
+@dataclass(frozen=True)
+class WaitingRequest:
+    """A request whose latest decision defers for a library extension."""
+
+    record: GateRecord
+    unbound: tuple[HazardProposal, ...]
+
+    @property
+    def hazard_classes(self) -> frozenset[str]:
+        return frozenset(h.hazard_class for h in self.unbound)
+
+
+@dataclass
+class PendingClass:
+    """The requests waiting on one hazard class."""
+
+    hazard_class: str
+    requests: list[WaitingRequest] = field(default_factory=list)
+    covered_by: tuple[str, ...] = ()
+    suggested_template: dict[str, Any] = field(default_factory=dict)
+
+
+def _unbound_hazards(record: GateRecord) -> tuple[HazardProposal, ...]:
+    hazards: list[HazardProposal] = []
+    for trigger in record.triggers:
+        if isinstance(trigger, dict) and "hazard_class" in trigger:
+            try:
+                hazards.append(HazardProposal.model_validate(trigger))
+            except ValidationError:
+                continue
+    return tuple(hazards)
+
+
+def is_waiting(record: GateRecord) -> bool:
+    """Whether a decision defers for a library extension."""
+    return record.decision == "defer" and record.defer_kind == "extend_library"
+
+
+def waiting_requests(services: Services) -> list[WaitingRequest]:
+    """Every request waiting for a library extension, oldest first."""
+    records = services.repository.list_pending_library_extensions(limit=PENDING_LIMIT)
+    return [WaitingRequest(record, _unbound_hazards(record)) for record in records]
+
+
+def pending_by_class(services: Services) -> list[PendingClass]:
+    """Waiting requests grouped by the hazard classes they wait for, largest group first."""
+    groups: dict[str, PendingClass] = {}
+    for waiting in waiting_requests(services):
+        for hazard_class in sorted(waiting.hazard_classes):
+            groups.setdefault(hazard_class, PendingClass(hazard_class)).requests.append(waiting)
+    library = services.repository.list_templates()
+    index = services.templates.index()
+    for group in groups.values():
+        group.covered_by = tuple(t.id for t in index.for_class(group.hazard_class))
+        proposal = next(
+            h for h in group.requests[0].unbound if h.hazard_class == group.hazard_class
+        )
+        group.suggested_template = suggest_template(proposal, library)
+    return sorted(groups.values(), key=lambda g: (-len(g.requests), g.hazard_class))
+
+
+def latest_in_chain(services: Services, request_id: str) -> GateRecord:
+    """The most recent decision that follows `request_id` (itself when none does)."""
+    record = services.repository.get_gate_record(request_id)
+    while True:
+        children = services.repository.list_child_records(str(record.id))
+        if not children:
+            return record
+        record = children[-1]
+
+
+def reevaluate_request(services: Services, request_id: str) -> Decided:
+    """Decide a waiting request again (the latest decision of its chain) with today's library.
+
+    Raises:
+        NotFound: no such request.
+        Conflict: the request's latest decision is not an `extend_library` deferral.
+    """
+    latest = latest_in_chain(services, request_id)
+    if not is_waiting(latest):
+        kind = f" ({latest.defer_kind})" if latest.defer_kind else ""
+        raise Conflict(
+            f"request {request_id!r} is not waiting for a library extension: its latest "
+            f"decision {latest.id!r} is {latest.decision}{kind}",
+            latest_request_id=latest.id,
+        )
+    return gate.reevaluate(services, str(latest.id))
+
+
+def reevaluate_class(services: Services, hazard_class: str) -> list[tuple[str, Decided]]:
+    """Decide again every request waiting on a hazard class an active template now covers.
+
+    Returns:
+        (id of the re-decided record, the new decision) per waiting request, oldest first.
+
+    Raises:
+        Conflict: no active template covers the class (nothing would change).
+    """
+    if not services.templates.index().covers(hazard_class):
+        raise Conflict(
+            f"no active template covers hazard class {hazard_class!r}; add and activate one "
+            "first", field="body.hazard_class")
+    waiting = [w for w in waiting_requests(services) if hazard_class in w.hazard_classes]
+    return [(str(w.record.id), gate.reevaluate(services, str(w.record.id))) for w in waiting]

@@ -1,0 +1,128 @@
+"""The verification use case: check a plan against a stored (or inline) contract, spend repair
+attempts on failures, and downgrade the gate decision when they run out.
+
+In: a plan, a contract id or an inline `Contract`, and optionally an initial state (default: the
+state of the gate request the stored contract came from). Out: `Verified`: the domain verdict,
+the attempts used and left, and the gate decision that now stands (`authorize`, or `reject` once
+the k-th failure downgraded it; None for an inline contract, which has no gate request).
+Each failed verification of a stored contract spends one attempt atomically before it is
+answered; the k-th failure marks the contract exhausted and the gate record downgraded, with the
+reason, in the audit trail. A passing plan spends nothing. Every verification is recorded.
+Fails: `NotFound` (no such contract), `AttemptsExhausted` (the contract is exhausted: 409),
+`InvalidInput` (bad plan or formula, or an inline contract without an initial state),
+`Unavailable` (database).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass
+from typing import Any
+
+from app.domain.contracts import Contract
+from app.domain.errors import AttemptsExhausted, InvalidInput
+from app.domain.models import GateRequest, InitialState
+from app.domain.verify import Undecided, VerificationResult, Violation, verify_plan
+from app.services.container import Services
+from app.store.records import ContractRecord, ContractStatus, VerificationAttemptRecord
+
+AUTHORIZE = "authorize"
+REJECT = "reject"
+
+
+@dataclass(frozen=True)
+class Verified:
+    """A verification's verdict and what it did to the contract's budget and the decision."""
+
+    result: VerificationResult
+    contract_id: str | None
+    attempts: int
+    attempts_left: int | None
+    decision: str | None
+    downgraded: bool
+    duration_ms: float
+
+
+def verify(
+    services: Services,
+    plan: Sequence[object],
+    *,
+    contract_id: str | None = None,
+    contract: Contract | None = None,
+    initial_state: InitialState | None = None,
+) -> Verified:
+    """Verify a plan and keep the attempt budget and the audit trail.
+
+    Args:
+        services: the app's services.
+        plan: the steps as sent.
+        contract_id: a stored contract (mutually exclusive with `contract`).
+        contract: an inline contract, verified without budget or audit trail.
+        initial_state: the starting state; default the stored contract's gate request.
+
+    Returns:
+        The verdict with attempts used/left and the standing decision.
+
+    Raises:
+        AttemptsExhausted: the stored contract has no attempt left.
+        NotFound: no such contract.
+        InvalidInput: neither or both of `contract_id` and `contract`; an inline contract
+            without an initial state; a bad plan step or condition.
+    """
+    if (contract_id is None) == (contract is None):
+        raise InvalidInput("give exactly one of contract_id and contract", field="body")
+    timeout_ms = services.settings.solver_timeout_ms
+    if contract is not None:
+        if initial_state is None:
+            raise InvalidInput("an inline contract needs an initial_state",
+                               field="body.initial_state")
+        started = time.perf_counter()
+        result = verify_plan(plan, contract, initial_state, timeout_ms=timeout_ms)
+        return Verified(result, None, 0, None, None, False, _since(started))
+    assert contract_id is not None
+    repository = services.repository
+    stored = repository.get_contract(contract_id)
+    if stored.status is ContractStatus.EXHAUSTED or stored.attempts_left == 0:
+        raise AttemptsExhausted(
+            f"contract {contract_id!r} has used all {stored.max_attempts} verification "
+            "attempts; the task was rejected",
+            attempts_used=stored.attempts_used, max_attempts=stored.max_attempts)
+    start: GateRequest | InitialState = (
+        initial_state if initial_state is not None
+        else repository.get_gate_record(stored.request_id).request)
+    started = time.perf_counter()
+    result = verify_plan(plan, Contract.model_validate(stored.contract), start,
+                         timeout_ms=timeout_ms)
+    duration_ms = _since(started)
+    if not result.ok:
+        stored = repository.use_verification_attempt(contract_id)
+    repository.save_verification_attempt(VerificationAttemptRecord(
+        contract_id=contract_id, plan=list(plan), ok=result.ok,
+        violations=[*map(_violation_json, result.violations),
+                    *map(_violation_json, result.undecided)],
+        duration_ms=duration_ms))
+    downgraded = False
+    if not result.ok and stored.attempts_left == 0:
+        _downgrade(services, stored, result)
+        downgraded = True
+    return Verified(result, contract_id, stored.attempts_used, stored.attempts_left,
+                    REJECT if downgraded else AUTHORIZE, downgraded, duration_ms)
+
+
+def _downgrade(services: Services, stored: ContractRecord, result: VerificationResult) -> None:
+    assert stored.id is not None
+    reason = (f"plan verification failed {stored.attempts_used} of {stored.max_attempts} "
+              f"allowed times (last: {result.reason}); decision downgraded to reject")
+    services.repository.mark_contract_exhausted(stored.id)
+    services.repository.mark_gate_record_downgraded(stored.request_id, reason)
+
+
+def _violation_json(item: Violation | Undecided) -> dict[str, Any]:
+    body: dict[str, Any] = asdict(item)
+    body["kind"] = item.kind.value
+    return body
+
+
+def _since(started: float) -> float:
+    return round((time.perf_counter() - started) * 1000, 3)

@@ -1,0 +1,207 @@
+"""Queries on the audit trail: every gate request with its decision, and how records chain.
+
+In: `GateRecord` values. Out: `GateRecord` values with their id and creation time. A record is
+never rewritten except to link it to its parent, attach its contract or mark it downgraded.
+A "pending" library extension is a record deferred with `extend_library` that no later record
+(an answer or a re-evaluation) has yet been linked to.
+Fails: `NotFound` for unknown ids, `Conflict` for a link that would break the chain,
+`Unavailable` for database errors.
+"""
+
+from __future__ import annotations
+
+from sqlalchemy import exists, select
+from sqlalchemy.orm import Session, aliased
+
+from app.domain.errors import Conflict, NotFound
+from app.domain.models import GateRequest, HazardReport
+from app.store.records import ContractRecord, GateRecord
+from app.store.repository._base import RepositoryBase
+from app.store.repository.contracts import insert_contract, to_contract_record
+from app.store.tables import GateRecordRow, new_id, utc_now
+
+EXTEND_LIBRARY = "extend_library"
+DEFER = "defer"
+
+
+def _to_record(row: GateRecordRow) -> GateRecord:
+    return GateRecord(
+        id=row.id,
+        created_at=row.created_at,
+        request=GateRequest.model_validate(row.request),
+        hazard_report=(
+            HazardReport.model_validate(row.hazard_report)
+            if row.hazard_report is not None
+            else None
+        ),
+        decision=row.decision,
+        rule=row.rule,
+        defer_kind=row.defer_kind,
+        question=row.question,
+        triggers=list(row.triggers),
+        timings=dict(row.timings),
+        analyzer=row.analyzer,
+        template_versions={str(k): int(v) for k, v in row.template_versions.items()},
+        contract_id=row.contract_id,
+        parent_request_id=row.parent_request_id,
+        downgraded=row.downgraded,
+        downgrade_reason=row.downgrade_reason,
+    )
+
+
+def _gate_row(session: Session, request_id: str) -> GateRecordRow:
+    row = session.get(GateRecordRow, request_id)
+    if row is None:
+        raise NotFound(f"no gate request {request_id!r}")
+    return row
+
+
+def _insert_gate_record(session: Session, record: GateRecord) -> GateRecordRow:
+    """Add a gate record in an open transaction."""
+    if record.parent_request_id is not None:
+        _gate_row(session, record.parent_request_id)
+    if record.id is not None and session.get(GateRecordRow, record.id) is not None:
+        raise Conflict(f"gate request {record.id!r} already exists")
+    row = GateRecordRow(
+        id=record.id or new_id(),
+        created_at=record.created_at or utc_now(),
+        request=record.request.model_dump(mode="json", by_alias=True),
+        hazard_report=(
+            record.hazard_report.model_dump(mode="json")
+            if record.hazard_report is not None
+            else None
+        ),
+        decision=record.decision,
+        rule=record.rule,
+        defer_kind=record.defer_kind,
+        question=record.question,
+        triggers=list(record.triggers),
+        timings=dict(record.timings),
+        analyzer=record.analyzer,
+        template_versions=dict(record.template_versions),
+        contract_id=record.contract_id,
+        parent_request_id=record.parent_request_id,
+        downgraded=record.downgraded,
+        downgrade_reason=record.downgrade_reason,
+    )
+    session.add(row)
+    session.flush()
+    return row
+
+
+class AuditQueries(RepositoryBase):
+    """Gate records: the decision audit trail."""
+
+    def save_gate_record(self, record: GateRecord) -> GateRecord:
+        """Store a gate decision.
+
+        Args:
+            record: the decision; a missing id or created_at is filled in.
+
+        Returns:
+            The record as stored.
+
+        Raises:
+            NotFound: `parent_request_id` names no stored record.
+            Conflict: a record with this id already exists.
+        """
+        with self._transaction("saving a gate record") as session:
+            return _to_record(_insert_gate_record(session, record))
+
+    def save_gate_decision(
+        self, record: GateRecord, contract: ContractRecord | None = None
+    ) -> tuple[GateRecord, ContractRecord | None]:
+        """Store a decision and, for an authorization, its contract, in one transaction.
+
+        Either both are in the audit trail or neither is, so no authorization is ever
+        recorded without the contract it was given.
+
+        Args:
+            record: the decision; its id must be set when a contract is given.
+            contract: the compiled contract whose `request_id` is the record's id.
+
+        Returns:
+            The stored record (pointing at its contract) and the stored contract.
+        """
+        with self._transaction("saving a gate decision") as session:
+            row = _insert_gate_record(session, record)
+            stored_contract = (
+                to_contract_record(insert_contract(session, contract)) if contract else None
+            )
+            session.flush()
+            return _to_record(row), stored_contract
+
+    def get_gate_record(self, request_id: str) -> GateRecord:
+        """One gate record by id.
+
+        Raises:
+            NotFound: no such record.
+        """
+        with self._transaction("reading a gate record") as session:
+            return _to_record(_gate_row(session, request_id))
+
+    def list_child_records(self, request_id: str) -> list[GateRecord]:
+        """Records linked to `request_id` as its answers or re-evaluations, oldest first."""
+        with self._transaction("listing child gate records") as session:
+            rows = session.scalars(
+                select(GateRecordRow)
+                .where(GateRecordRow.parent_request_id == request_id)
+                .order_by(GateRecordRow.created_at, GateRecordRow.id)
+            ).all()
+            return [_to_record(row) for row in rows]
+
+    def list_pending_library_extensions(self, limit: int = 100) -> list[GateRecord]:
+        """Records deferred for `extend_library` that no later record answers yet, oldest first.
+
+        Args:
+            limit: at most this many records.
+        """
+        child = aliased(GateRecordRow)
+        query = (
+            select(GateRecordRow)
+            .where(GateRecordRow.decision == DEFER)
+            .where(GateRecordRow.defer_kind == EXTEND_LIBRARY)
+            .where(~exists().where(child.parent_request_id == GateRecordRow.id))
+            .order_by(GateRecordRow.created_at, GateRecordRow.id)
+            .limit(limit)
+        )
+        with self._transaction("listing pending library extensions") as session:
+            return [_to_record(row) for row in session.scalars(query).all()]
+
+    def link_child_record(self, parent_id: str, child_id: str) -> GateRecord:
+        """Record that `child_id` answers or re-evaluates `parent_id`.
+
+        Returns:
+            The child record, now linked.
+
+        Raises:
+            NotFound: either record does not exist.
+            Conflict: the child is the parent, is already linked elsewhere, or is an ancestor
+                of the parent (the chain would loop).
+        """
+        if parent_id == child_id:
+            raise Conflict("a gate record cannot be its own parent")
+        with self._transaction("linking gate records") as session:
+            parent = _gate_row(session, parent_id)
+            child = _gate_row(session, child_id)
+            if child.parent_request_id not in (None, parent_id):
+                raise Conflict(f"gate request {child_id!r} is already linked to another request")
+            ancestor = parent
+            while ancestor.parent_request_id is not None:
+                if ancestor.parent_request_id == child_id:
+                    raise Conflict("linking these gate records would make a loop")
+                ancestor = _gate_row(session, ancestor.parent_request_id)
+            child.parent_request_id = parent_id
+            return _to_record(child)
+
+    def mark_gate_record_downgraded(self, request_id: str, reason: str) -> GateRecord:
+        """Mark an authorized request downgraded (its contract's attempts ran out).
+
+        Raises:
+            NotFound: no such record.
+        """
+        with self._transaction("downgrading a gate record") as session:
+            row = _gate_row(session, request_id)
+            row.downgraded = True
+            row.downgrade_reason = reason
+            return _to_record(row)
