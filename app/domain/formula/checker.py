@@ -41,6 +41,9 @@ from app.domain.formula.nodes import (
 from app.domain.formula.vocabulary import ALL_TYPES, VOCABULARY
 
 _ENTITY_KINDS = frozenset({"robot", "object", "person", "entity"})
+OPAQUE_ENTITY = "entity or room"
+"""The type of an `#id` constant or an `@object`/`@target` argument: which kind of entity it
+names is only known in a state, so it may stand wherever an entity or a room is expected."""
 _ORDERED_OPS = frozenset({"<", "<=", ">", ">="})
 
 
@@ -59,6 +62,10 @@ def accepts(expected: str, actual: str) -> bool:
     """Whether an expression of type `actual` may stand where `expected` is required."""
     if expected == actual:
         return True
+    if actual == OPAQUE_ENTITY:
+        return expected in _ENTITY_KINDS or expected == "room"
+    if expected == OPAQUE_ENTITY:
+        return actual in _ENTITY_KINDS or actual == "room"
     if expected == "entity":
         return actual in _ENTITY_KINDS
     return expected in _ENTITY_KINDS and actual == "entity"
@@ -84,13 +91,13 @@ class _Checker:
         if isinstance(node, RobotConst):
             return "robot"
         if isinstance(node, EntityRef):
-            return "entity"
+            return OPAQUE_ENTITY
         if isinstance(node, VarRef):
             return self._variable(node)
         if isinstance(node, ActionArg):
             if not self.allow_action_args:
                 raise _fail(node, f"@{node.name} may only be used in a guard")
-            return "entity"
+            return OPAQUE_ENTITY
         if isinstance(node, BoundVar):
             if node.name not in scope:
                 hint = _suggest(node.name, list(scope))

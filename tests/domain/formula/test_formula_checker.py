@@ -106,5 +106,14 @@ class TestInferType:
     def test_infers_function_result_type(self) -> None:
         assert infer_type(parse("contents($obj)"), VARIABLES) == "string"
 
-    def test_action_argument_is_entity(self) -> None:
-        assert infer_type(parse("@target"), VARIABLES) == "entity"
+    def test_action_argument_is_an_entity_of_any_kind(self) -> None:
+        assert infer_type(parse("@target"), VARIABLES) == "entity or room"
+
+    def test_action_argument_may_be_compared_with_a_room(self) -> None:
+        check(parse("@target != $kitchen"), VARIABLES, allow_action_args=True)
+
+    def test_bound_room_constant_fits_a_room_argument(self) -> None:
+        check(parse('in_room(robot, #"hallway")'), {})
+
+    def test_a_room_still_cannot_stand_for_an_object(self) -> None:
+        assert "must be object" in _error("hot($kitchen)").detail
