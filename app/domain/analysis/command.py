@@ -39,7 +39,12 @@ _LEADING_FILLER = ("please", "robot", "hey", "ok", "okay", "now", "then", "also"
                    "remember to", "try to", "you should", "you can", "then please", "but")
 _NEGATIONS = ("don't", "do not", "dont", "never", "no need to", "do n't", "stop to")
 _CONDITIONS = ("if", "when", "once", "unless", "while", "whenever", "in case", "as soon as",
-               "before", "after", "until", "since", "because")
+               "before", "after", "until", "since", "because", "so that", "so")
+# Words that open a new sentence after a comma (a subject), not another item of a list.
+_SUBJECTS = frozenset({"i", "i'll", "i'm", "i've", "i'd", "we", "we'll", "we're", "he", "he's",
+                       "she", "she's", "they", "they're", "it's", "everyone's", "everybody's",
+                       "nobody's", "no", "there's", "that's", "you'll", "you're"})
+_GIVE_IDIOM = frozenset({"give", "do"})
 _PERSON_FIRST = frozenset({"me", "him", "her", "them", "us"})
 
 
@@ -68,8 +73,9 @@ class Step:
 def normalize(text: str) -> str:
     """Lower case, plain apostrophes, punctuation as separate tokens, single spaces."""
     text = text.lower().replace("\u2019", "'").replace("\u2018", "'")
-    text = re.sub(r"[\"()\[\]{}:]", " ", text)
-    text = re.sub(r"([,;.!?])", r" \1 ", text)
+    text = re.sub(r"[\"()\[\]{}]", " ", text)
+    text = re.sub(r"\s[-\u2013\u2014]+\s", " ; ", f" {text} ")
+    text = re.sub(r"([,;.!?:])", r" \1 ", text)
     return " ".join(text.split())
 
 
@@ -111,7 +117,7 @@ def _separated_particle(words: list[str], verb: str, knowledge: Knowledge) -> in
         if word in _PARTICLES and f"{verb} {word}" in knowledge.verb_words:
             after = words[position + 1] if position + 1 < len(words) else None
             if after is None or after in ("and", ",", "for", "so", "until", "while", "before",
-                                          "after", "when", "if") or any(
+                                          "after", "when", "if", "again", "now") or any(
                     after == p.split()[0] for p in _PREPOSITIONS):
                 return position
     return None
@@ -131,7 +137,11 @@ def split_clauses(text: str, knowledge: Knowledge) -> list[str]:
     clauses: list[list[str]] = [[]]
     for position, word in enumerate(words):
         rest = words[position + 1:]
-        if word in (".", ";", "!", "?"):
+        if word in (".", ";", "!", "?", ":"):
+            clauses.append([])
+            continue
+        if word == "," and clauses[-1] and rest[:1] and rest[0] in _SUBJECTS:
+            # ", I'll take it down later" / ", everyone's in bed": a new sentence, not a list.
             clauses.append([])
             continue
         if word == "then" or (word == "after" and rest[:1] == ["that"]):
@@ -143,7 +153,7 @@ def split_clauses(text: str, knowledge: Knowledge) -> list[str]:
             clauses.append([])
             continue
         if word in ("if", "unless", "before", "while", "until", "once", "when", "whenever",
-                    "because") and clauses[-1]:
+                    "because", "so") and clauses[-1]:
             clauses.append([])
         clauses[-1].append(word)
     return [" ".join(c).strip(" ,") for c in clauses if " ".join(c).strip(" ,")]
@@ -221,6 +231,7 @@ def parse_command(command: str, knowledge: Knowledge, names: Collection[str] = (
         words, _ = _strip_leading(words, _LEADING_FILLER)
         while len(words) > 1 and words[0].endswith("ly") and _verb_at(words, knowledge) is None:
             words = words[1:]  # a leading adverb ("secretly", "carefully") before the verb
+        words = _verb_noun_idiom(words, knowledge)
         step = _parse_clause(len(steps), clause, words, knowledge, names,
                              negated=negation is not None, condition=pending_condition)
         pending_condition = None
@@ -232,7 +243,13 @@ def _parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledg
                   names: Collection[str], *, negated: bool, condition: str | None) -> Step:
     found = _verb_at(words, knowledge)
     if found is None:
-        return Step(index, clause, None, None, negated=negated, condition=condition)
+        # "The toaster's smoking!": no action, but its subject is what a later "it" means.
+        subject = _subject_of(words)
+        heard = [parse_mention(" ".join(subject), knowledge, names)] if subject else []
+        heard += [parse_mention(w.removesuffix("'s"), knowledge, names) for w in words
+                  if w.removesuffix("'s") in names or w.removesuffix("'s") in knowledge.role_words]
+        return Step(index, clause, None, None, negated=negated, condition=condition,
+                    objects=tuple(m for m in heard if m.kind in ("object", "person", "name")))
     verb, used, particle = found
     rest = [w for i, w in enumerate(words[used:], start=used) if i != particle]
     action = knowledge.verb_words[verb]
@@ -246,10 +263,15 @@ def _parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledg
     recipient: Mention | None = None
     if action in ("handover", "transport", "serve", "pour", "pick", "heat") and segments[0][1]:
         first = segments[0][1]
+        lead = _leading_person(first, knowledge, names)
         if first[0] in _PERSON_FIRST and len(first) > 1 and not any(
                 p == "to" for p, _ in segments[1:]):
             recipient, objects = mention(first[:1]), [mention(t.split())
                                                       for t in _split_list(first[1:])]
+        elif lead and not any(p == "to" for p, _ in segments[1:]):
+            # "give Aisha one of the cookies", "take Grandad a whisky": the person comes first.
+            recipient = mention(first[:lead])
+            objects = [mention(t.split()) for t in _split_list(first[lead:])]
         else:
             cut = next((i for i, w in enumerate(first[1:], 1)
                         if w in ("the", "a", "an", "some", "his", "her", "their", "my")), None)
@@ -268,6 +290,7 @@ def _parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledg
         for position in range(len(segments) - 1, 0, -1):
             prep = segments[position][0]
             allowed = (_CARRYING_DESTINATIONS if action in _CARRYING_ACTIONS
+                       else _PLACE_PREPS | {"to", "at"} if action in ("place", "block")
                        else _PLACE_PREPS | {"to"})
             if prep in allowed:
                 candidate = mention(segments[position][1])
@@ -302,7 +325,9 @@ def _parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledg
         elif prep in ("through", "past", "across", "around", "along", "between"):
             parts["path"], previous = phrase, "path"
         elif prep in _PLACE_PREPS or prep in ("to", "for", "at"):
-            if previous == "object" and objects:
+            if action == "navigate" and _person_like(phrase) and "target" not in parts:
+                parts["target"], previous = phrase, "target"  # "roll up behind Kevin"
+            elif previous == "object" and objects:
                 objects[-1] = with_location(objects[-1], prep, phrase)
             elif previous == "recipient" and recipient is not None:
                 recipient = with_location(recipient, prep, phrase)
@@ -310,6 +335,13 @@ def _parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledg
                 parts[previous] = with_location(parts[previous], prep, phrase)
     if objects and action in knowledge.person_object_classes and _person_like(objects[0]):
         action = knowledge.person_object_classes[action]
+    if action == "throw" and "target" not in parts and destination_prep in (
+            "in", "into", "on", "onto", "inside"):
+        action = "place"  # "chuck the peel in the bin": put it there, not a throw at anyone
+    if action == "pour" and objects and not any(
+            o.substance or o.contents or (o.concept and "container" in knowledge.concepts[
+                o.concept].props) for o in objects):
+        action = "place"  # "dump the basket on the landing": nothing liquid is poured
     if verb in knowledge.food_only_verbs and not any(
             o.substance or (o.concept and "food" in knowledge.concepts[o.concept].props)
             for o in objects):
@@ -320,3 +352,44 @@ def _parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledg
                 target=parts.get("target"), instrument=parts.get("instrument"),
                 source=parts.get("source"), away_from=parts.get("away_from"),
                 path=parts.get("path"), keeps_state=keeps)
+
+
+def _verb_noun_idiom(words: list[str], knowledge: Knowledge) -> list[str]:
+    """"give the table a wipe" -> "wipe the table": the noun after "a" is the real action."""
+    if len(words) < 4 or words[0] not in _GIVE_IDIOM:
+        return words
+    for position in range(2, len(words) - 1):
+        if words[position] in ("a", "an"):
+            noun = words[position + 1]
+            adjective_noun = words[position + 2] if position + 2 < len(words) else ""
+            for candidate in (noun, adjective_noun):
+                action = knowledge.verb_words.get(candidate)
+                if action and action not in ("handover", "transport", "serve", "misc"):
+                    tail = words[position + 2:] if candidate == noun else words[position + 3:]
+                    return [candidate, *words[1:position], *tail]
+            return words
+    return words
+
+
+def _subject_of(words: list[str]) -> list[str]:
+    """The noun phrase before "is"/"'s"/"are" in a verbless sentence ("the toaster's smoking")."""
+    for position, word in enumerate(words):
+        if word in ("is", "are", "was", "were", "has", "keeps"):
+            return words[:position]
+        if word.endswith("'s") and position + 1 < len(words) and words[position + 1] not in (
+                "a", "an", "the"):
+            return [*words[:position], word[:-2]]
+    return []
+
+
+def _leading_person(words: list[str], knowledge: Knowledge, names: Collection[str]) -> int:
+    """How many leading words name a person ("aisha", "grandad", "mr osei"), 0 if none."""
+    for length in (3, 2, 1):
+        if len(words) <= length:
+            continue
+        phrase = " ".join(words[:length])
+        if phrase in names or phrase in knowledge.role_words:
+            return length
+        if length > 1 and words[0] in ("mr", "mrs", "ms", "miss", "dr") and phrase in names:
+            return length
+    return 0

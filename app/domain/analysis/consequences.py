@@ -104,7 +104,19 @@ def _left_open(ctx: Context, obj: ObjectView, grounded: GroundedStep) -> None:
     young = [p for p in children if p.young or p.age_group == "infant"] or children
     text = grounded.step.text
     if obj.has("safety_barrier"):
-        if young:
+        lost = [p for p in young if p.room is None and not p.virtual]
+        if lost and all(p.room is None for p in young):
+            # The child is at home but where is not known: in reach of the danger or not.
+            child = lost[0]
+            ctx.add(Level.DEPLOYMENT, _CON, "safety_barrier_removed", f"{obj.label} is opened "
+                    f"while {child.label} ({child.age_group}) may be near it; where they are is "
+                    "not known.", {"aid": obj.id, "obj": obj.id, "person": child.id}, _S.HIGH, _X)
+            ctx.unknown("person_location", f"where {child.label} is right now", critical=True,
+                        why=f"{obj.label} keeps {child.label} from danger; opening it matters "
+                        "only if they can get to it", entity=child.id,
+                        question=f"Where is {child.label} right now? {obj.label} keeps them "
+                        "from danger while it is open.")
+        elif young:
             ctx.add(Level.DEPLOYMENT, _CON, "safety_barrier_removed", f"{obj.label} is opened "
                     f"or removed while {young[0].label} ({young[0].age_group}) is at home.",
                     {"aid": obj.id, "obj": obj.id, "person": young[0].id}, _S.HIGH, _U)
@@ -237,6 +249,15 @@ def _walking_aid(ctx: Context, grounded: GroundedStep) -> None:
 def _darkness(ctx: Context, obj: ObjectView) -> None:
     if not obj.has("light"):
         return
+    for person in ctx.view.real_people():
+        if (person.room is None and person.frail and not person.asleep and person.mobility in (
+                "assisted", "wheelchair")) or (person.room is None and person.needs_walking_aid):
+            # Someone unsteady whose whereabouts are unknown may be exactly where it goes dark.
+            ctx.unknown("person_location", f"where {person.label} is right now", critical=True,
+                        why=f"{person.label} is unsteady on their feet and may be where "
+                        f"{obj.label} lights the way", entity=person.id,
+                        question=f"Where is {person.label} right now? Switching off "
+                        f"{obj.label} could leave them walking in the dark.")
     for person in ctx.view.people_in(obj.room) if obj.room else ctx.view.people.values():
         if person.frail and not person.asleep:
             ctx.add(Level.DEPLOYMENT, _CON, "darkness_fall", f"Switching off {obj.label} "

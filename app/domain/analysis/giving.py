@@ -89,7 +89,7 @@ def _give(ctx: Context, grounded: GroundedStep, obj: ObjectView, traits: Traits,
             add("hot", "scald_hot_liquid", f"Carrying and handing {what}, which is hot, to "
                 f"{who} risks a scald if it spills.", Severity.MODERATE, _P, confidence=confidence)
     if traits.has("toxic") and not traits.has("medication"):
-        if consuming or obj.has("drink_container") or traits.has("drink"):
+        if consuming or obj.has("drinking_vessel") or traits.has("drink"):
             add("toxic", "chemical_ingestion", f"Serving {what}, a toxic substance, to {who} "
                 "as food or drink can poison them.", Severity.CRITICAL, _U)
         elif child or person.cognitive_state == "impaired":

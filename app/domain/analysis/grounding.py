@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from app.domain.analysis.command import Step
 from app.domain.analysis.knowledge_base import Knowledge, singular
 from app.domain.analysis.mentions import Mention
-from app.domain.analysis.scene_view import ObjectView, PersonView, SceneView
+from app.domain.analysis.scene_view import ObjectView, PersonView, SceneView, spaced_name
 from app.domain.models import Level
 
 _SWITCHABLE = frozenset({"heat_source", "electrical", "appliance", "light", "water_source",
@@ -87,6 +87,8 @@ class Grounder:
         referent = self.resolve(mention, remember=False) if mention else None
         if referent is not None and referent.kind == "object":
             self._history.append(referent)
+        if referent is not None and referent.kind == "person":
+            self._remember_person(referent)
         return referent
 
     def resolve(self, mention: Mention, *, prefer: str | None = None, remember: bool = True
@@ -97,10 +99,13 @@ class Grounder:
             self._last_object = referent
             self._history.append(referent)
         if remember and referent.kind == "person":
-            genders = {self._view.people[i].gender for i in referent.ids if i in self._view.people}
-            for gender in genders | {None}:
-                self._last_person[gender] = referent
+            self._remember_person(referent)
         return referent
+
+    def _remember_person(self, referent: Referent) -> None:
+        genders = {self._view.people[i].gender for i in referent.ids if i in self._view.people}
+        for gender in genders | {None}:
+            self._last_person[gender] = referent
 
     def _resolve(self, mention: Mention, prefer: str | None) -> Referent:
         view = self._view
@@ -173,9 +178,15 @@ class Grounder:
 
     def _object(self, mention: Mention) -> Referent:
         candidates = [o for o in self._view.objects.values() if self._names(o, mention)]
-        candidates = self._narrow(candidates, mention)
+        # An object named by its own word beats one that only shares the word's concept.
+        literal = [o for o in candidates if self._literally(o, mention)]
+        candidates = self._narrow(literal or candidates, mention)
         if candidates:
             return Referent(mention, "object", tuple(o.id for o in candidates))
+        holder = self._holder(mention)
+        if holder:
+            # "the leftovers in the foil tray": the scene lists the tray, which holds them.
+            return Referent(mention, "object", holder)
         object_id = (mention.substance or mention.head).replace(" ", "_")
         if object_id not in self._view.objects:
             concept = mention.concept
@@ -186,6 +197,22 @@ class Grounder:
                 mass_kg=self._knowledge.concepts[concept].mass_kg if concept else None,
                 virtual=True)
         return Referent(mention, "object", (object_id,), virtual=True)
+
+    @staticmethod
+    def _literally(obj: ObjectView, mention: Mention) -> bool:
+        text = f"{obj.id} {obj.name or ''} {spaced_name(obj.type)}"
+        words = text.lower().replace("_", " ").split()
+        return any(w in words or singular(w) in words for w in mention.head.split())
+
+    def _holder(self, mention: Mention) -> tuple[str, ...]:
+        if mention.location is None or mention.location[0] not in ("in", "inside"):
+            return ()
+        place = mention.location[1]
+        if place.kind != "object":
+            return ()
+        found = [o for o in self._view.objects.values()
+                 if self._names(o, place) and o.has("container") and not o.has("fixed")]
+        return tuple(o.id for o in self._narrow(found, place))
 
     def _names(self, obj: ObjectView, mention: Mention) -> bool:
         head = mention.head

@@ -105,7 +105,11 @@ def _heat(ctx: Context, grounded: GroundedStep) -> None:
         sources = [o for o in ctx.view.objects.values() if o.has("heat_source") and (
             o.concept == "microwave") == microwave and not o.virtual][:1]
     other = sources[0].id if sources else None
-    for obj, ref in _pairs(ctx, grounded):
+    # "heat the soup in the tin": the vessel named by the destination is heated too.
+    dest = grounded.destination
+    vessels = [(o, dest) for o in ctx.objects(dest) if o.has("container") and not o.has(
+        "heat_source") and not o.has("fixed")] if dest else []
+    for obj, ref in [*_pairs(ctx, grounded), *vessels]:
         traits = traits_of(ctx, obj, ref.mention)
         entities = {"obj": obj.id, "other": other}
         if microwave and (traits.has("metal") or obj.properties.get("sealed")):

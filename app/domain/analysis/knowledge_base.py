@@ -80,6 +80,7 @@ class Knowledge:
     sensor_aliases: dict[str, str]
     person_object_classes: dict[str, str]
     food_only_verbs: frozenset[str]
+    place_object_verbs: frozenset[str]
     food_only_fallback: str
     irregular_verbs: dict[str, str]
     role_words: dict[str, Role]
@@ -223,6 +224,7 @@ def load_knowledge(directory: Path = KNOWLEDGE_DIR) -> Knowledge:
                         for a in aliases},
         person_object_classes=dict(reclassify["person_object"]),
         food_only_verbs=frozenset(reclassify["food_only_words"]),
+        place_object_verbs=frozenset(reclassify.get("place_object_words", ())),
         food_only_fallback=reclassify["food_only_fallback"],
         irregular_verbs=dict(verbs_raw["irregular"]),
         role_words=role_words,

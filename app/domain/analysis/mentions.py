@@ -17,6 +17,7 @@ from app.domain.analysis.knowledge_base import Knowledge, singular
 DETERMINERS = frozenset({
     "the", "a", "an", "some", "any", "this", "that", "these", "those", "all", "every", "each",
     "both", "another", "other", "more", "two", "three", "few", "several", "of", "whole",
+    "right", "straight", "just",
 })
 POSSESSIVES = {"my": "me", "our": "me", "his": "him", "her": "her", "their": "them",
                "your": "you", "its": "it"}

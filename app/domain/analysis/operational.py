@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep
-from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.scene_view import ObjectView, PersonView
 from app.domain.analysis.traits import traits_of
 from app.domain.models import Category, Confidence, Level, Preventability, Severity
 
@@ -22,6 +22,9 @@ _LIFTING = frozenset({"transport", "handover", "serve", "pick", "place", "remove
 _PERSON_LIFT_VERBS = frozenset({"lift", "lift up", "transfer", "carry", "pick up", "reposition"})
 _PERSON_MASS_KG = {"infant": 8.0, "child": 25.0, "teen": 55.0, "adult": 70.0,
                    "older_adult": 65.0}
+# Doing these without the skill for them endangers someone whatever the object.
+_RISKY_ACTIONS = frozenset({"cut", "heat", "assist", "pour", "climb", "throw"})
+_PLACE_LIKE = ("fixed", "furniture", "surface", "appliance", "storage", "container")
 _RISKY_TRAITS = ("sharp", "hot", "toxic", "heavy", "medication", "fragile", "heat_source",
                  "dangerous_in_use")
 
@@ -41,16 +44,31 @@ def operational_hazards(ctx: Context) -> None:
             _sensors(ctx, grounded, robot.sensors)
         _reach_and_route(ctx, grounded)
         if ctx.cue("hurry"):
+            flat_out = ctx.cue("max_speed")
             for person in _people_on_way(ctx, grounded):
                 level = Level.TASK if person.virtual else Level.DEPLOYMENT
-                ctx.add(level, _OPS, "speed_near_people", f"Hurrying near {person.label}.",
-                        {"person": person.id}, _S.MODERATE, _P)
+                if flat_out and (person.child or person.frail) and not person.is_user:
+                    # Told to go flat out where a child or frail person is: obeying is the harm.
+                    ctx.add(level, _OPS, "speed_near_people", f"Driving at full speed where "
+                            f"{person.label} is; a child or frail person cannot get out of the "
+                            "way.", {"person": person.id}, _S.HIGH, _U)
+                else:
+                    ctx.add(level, _OPS, "speed_near_people", f"Hurrying near {person.label}.",
+                            {"person": person.id}, _S.MODERATE, _P)
+
+
+def _worked_on_in_place(ctx: Context, grounded: GroundedStep, obj: ObjectView) -> bool:
+    """A fixture or furniture named by "clear/load/lay/unpack..." is worked on, not lifted."""
+    return (grounded.step.verb or "") in ctx.knowledge.place_object_verbs and any(
+        obj.has(p) for p in _PLACE_LIKE)
 
 
 def _payload(ctx: Context, grounded: GroundedStep, payload: float) -> None:
     if grounded.step.action in _LIFTING:
         for ref in grounded.objects:
             for obj in ctx.objects(ref):
+                if _worked_on_in_place(ctx, grounded, obj):
+                    continue
                 if obj.mass_kg is None:
                     if obj.has("furniture") or obj.has("heavy"):
                         ctx.unknown("mass_kg", f"the mass of {obj.label}", critical=False,
@@ -92,7 +110,7 @@ def _canonical(names: list[str], aliases: dict[str, str]) -> set[str]:
 
 
 def _risky(ctx: Context, grounded: GroundedStep) -> bool:
-    if grounded.recipient is not None:
+    if grounded.recipient is not None or grounded.step.action in _RISKY_ACTIONS:
         return True
     return any(traits_of(ctx, o, r.mention).has(t) for r in grounded.objects
                for o in ctx.objects(r) for t in _RISKY_TRAITS)
@@ -129,7 +147,8 @@ def _reach_and_route(ctx: Context, grounded: GroundedStep) -> None:
     action = grounded.step.action or ""
     for ref in grounded.objects:
         for obj in ctx.objects(ref):
-            if action in _LIFTING and not obj.virtual:
+            if action in _LIFTING and not obj.virtual and not _worked_on_in_place(
+                    ctx, grounded, obj):
                 record = ctx.knowledge.ai2thor_types.get(obj.type)
                 fixed = obj.has("fixed") or (record is not None and not record.get(
                     "pickupable") and not record.get("moveable"))
@@ -159,8 +178,24 @@ def _reach_and_route(ctx: Context, grounded: GroundedStep) -> None:
 
 def _people_on_way(ctx: Context, grounded: GroundedStep) -> list[PersonView]:
     rooms = {r.ids[0] for r in (grounded.destination, grounded.path) if r and r.kind == "room"}
+    if grounded.step.action == "navigate":
+        # "laps of the lounge", "down the hall": any room the clause names is driven through.
+        rooms |= {p.room for p in ctx.view.people.values()
+                  if p.room and _names_room(ctx, grounded.step.text, p.room)}
+        rooms |= {p.room for r in (grounded.target, *grounded.objects) for p in ctx.people(r)
+                  if p.room}
     rooms |= {p.room for p in ctx.people(grounded.recipient) if p.room}
     found = [p for room in rooms for p in ctx.view.people_in(room)]
     found += [p for r in (*grounded.objects, grounded.recipient, grounded.target)
               for p in ctx.people(r) if not p.is_user]
     return list({p.id: p for p in found}.values())
+
+
+def _names_room(ctx: Context, text: str, room: str | None) -> bool:
+    """Whether the clause names the room (by its id or any word for it)."""
+    if not room:
+        return False
+    words = {w for w, r in ctx.knowledge.room_words.items() if r == room}
+    words.add(room.replace("_", " "))
+    padded = f" {text} "
+    return any(f" {w} " in padded for w in words)

@@ -9,6 +9,7 @@ Never fails on a valid request; anything not given stays None (unknown), never a
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -21,6 +22,9 @@ _PROPERTY_FLAGS = ("sharp", "fragile", "toxic", "flammable", "electrical", "medi
                    "allergen", "food", "small", "heavy", "metal", "walking_aid",
                    "safety_barrier", "breakable", "corrosive", "camera", "personal",
                    "sentimental", "dangerous_in_use")
+_METALS = frozenset({"metal", "metallic", "steel", "iron", "tin", "foil", "copper", "brass",
+                     "chrome", "stainless"})
+_MELTS = frozenset({"plastic", "melamine", "polystyrene", "styrofoam", "nylon", "acrylic"})
 _OWNER_KEYS = ("owner", "for", "belongs_to", "prescribed_to", "prescribed_for", "patient")
 
 
@@ -108,6 +112,11 @@ class PersonView:
 _LEVEL_ORDER = [Level.TASK, Level.DEPLOYMENT, Level.USER]
 
 
+def spaced_name(name: str) -> str:
+    """A CamelCase or snake_case type name as lower-case words ("SinkBasin" -> "sink basin")."""
+    return _spaced(name)
+
+
 def _spaced(name: str) -> str:
     out = ""
     for char in name:
@@ -155,6 +164,13 @@ def object_view(obj: SceneObject, knowledge: Knowledge) -> ObjectView:
         flags.add("heat_source")
     if "Metal" in record.get("materials", []) and len(record.get("materials", [])) == 1:
         flags.add("metal")
+    material = set(re.split(r"[\W_]+", str(props.get("material", "")).lower())) - {""}
+    if material & _METALS or any(w.startswith("alumin") for w in material):
+        flags.add("metal")
+    elif material:
+        flags.discard("metal")  # a glass or ceramic pan is not metal whatever its kind
+    if material & _MELTS:
+        flags.add("meltable")
     for flag in _PROPERTY_FLAGS:
         if flag in props:
             (flags.add if props[flag] in _TRUE else flags.discard)(flag)

@@ -91,6 +91,11 @@ def _observe(ctx: Context, grounded: GroundedStep) -> None:
     covert = ctx.cue("covert") or verb in _COVERT_VERBS
     record = step.action == "record"
     people = _people(ctx, grounded)
+    tracked = _followed(ctx)
+    if tracked and not people:
+        # "follow her around and record everything": the recording is of the person followed,
+        # and following someone to record them is tracking, whatever words are used.
+        people, covert = tracked, True
     for ref in grounded.objects:
         for obj in ctx.objects(ref):
             owner = ref.mention.owner
@@ -119,6 +124,14 @@ def _observe(ctx: Context, grounded: GroundedStep) -> None:
             ctx.add(_lvl(person), _PSY, hazard, f"{'Recording' if record else 'Watching'} "
                     f"{person.label}: only openly and with their agreement.", entities,
                     _S.MODERATE if record else _S.LOW, _P)
+
+
+def _followed(ctx: Context) -> list[PersonView]:
+    """People the command has the robot follow or trail (not the user being escorted)."""
+    found = [p for g in ctx.steps if not g.step.negated and (g.step.verb or "-").split()[0] in (
+        "follow", "tail", "shadow", "trail") for r in (*g.objects, g.target)
+        for p in ctx.people(r) if not p.is_user]
+    return list({p.id: p for p in found}.values())
 
 
 def _assist(ctx: Context, grounded: GroundedStep, verb: str) -> None:
