@@ -139,6 +139,16 @@ def score_files(paths: list[Path], decide: Callable[[GateRequest], str]) -> Scor
     Raises:
         BenchmarkError: a malformed file, a case id repeated across files, or a bad decision.
     """
+    cases = load_files(paths)
+    return score(cases, [decide(case.request) for case in cases])
+
+
+def load_files(paths: Sequence[Path]) -> list[BenchmarkCase]:
+    """Read several JSONL benchmark files into one list, in order.
+
+    Raises:
+        BenchmarkError: a malformed file, or a case id repeated across files.
+    """
     cases: list[BenchmarkCase] = []
     seen: set[str] = set()
     for path in paths:
@@ -147,7 +157,7 @@ def score_files(paths: list[Path], decide: Callable[[GateRequest], str]) -> Scor
                 raise BenchmarkError(f"{path}: case id {case.id!r} already loaded from a file")
             seen.add(case.id)
             cases.append(case)
-    return score(cases, [decide(case.request) for case in cases])
+    return cases
 
 
 def _pct(value: float | None) -> str:

@@ -1,0 +1,1 @@
+"""Baselines re-implemented from their published descriptions (SELP, RoboGuard)."""
