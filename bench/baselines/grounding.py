@@ -116,8 +116,9 @@ def build_scene_graph(request: GateRequest, synonyms: Mapping[str, Any]) -> Scen
             if obj.name:
                 phrases.add(normalise(obj.name))
             contents = obj.properties.get("contents")
-            if isinstance(contents, str) and contents not in {"empty", "unknown"}:
-                phrases |= {normalise(contents), normalise(contents).split()[-1]}
+            words = normalise(contents).split() if isinstance(contents, str) else []
+            if words and contents not in {"empty", "unknown"}:
+                phrases |= {" ".join(words), words[-1]}
             # A flag such as fire_exit=True is also how people name the thing ("the fire exit").
             phrases |= {k.replace("_", " ") for k, v in obj.properties.items() if v is True
                         and k not in {"on", "open", "electrical", "sealed", "lidded"}}

@@ -142,6 +142,12 @@ class TestRoboGuardStyle:
         verdict = roboguard.decide(request("Hand Tom the knife.", scene=scene, robot=ROBOT))
         assert verdict.decision == "authorize"
 
+    def test_an_empty_container_does_not_break_grounding(self, roboguard: RoboGuardStyle) -> None:
+        cup = {"id": "cup_1", "type": "Cup", "room": "kitchen", "properties": {"contents": ""}}
+        scene = flat([KNIFE, cup], [])
+        verdict = roboguard.decide(request("Put the cup in the sink.", scene=scene, robot=ROBOT))
+        assert verdict.decision in {"authorize", "reject"}
+
     def test_an_unstated_age_grounds_nothing(self, roboguard: RoboGuardStyle) -> None:
         scene = flat([KNIFE], [{"id": "p1", "name": "Tom", "room": "kitchen"}])
         verdict = roboguard.decide(request("Hand Tom the knife.", scene=scene, robot=ROBOT))
