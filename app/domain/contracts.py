@@ -19,6 +19,7 @@ from pydantic import BaseModel, ConfigDict
 from app.domain.binding import BindingValue, BoundHazard, BoundTemplate
 from app.domain.formula import EntityRef, check, parse, render, substitute
 from app.domain.models import ConditionKind, TemplateCondition, VariableType
+from app.domain.world.action_specs import ACTION_SPECS
 
 _ENTITY_TYPES = {"object", "person", "room", "robot", "entity"}
 
@@ -143,23 +144,51 @@ def render_bindings(bindings: Mapping[str, BindingValue]) -> str:
 def planner_constraints(contract: Contract) -> list[str]:
     """The contract in plain words, one constraint a line, ready for a planner's prompt.
 
+    Each line says when the rule applies (in every state; just before every step of a named
+    action, with what that action does; or as a stop condition), the rule in words, the
+    concrete entities and values it is about, and the exact condition with its id, so a
+    planner can both follow it and match a `/verify` violation back to it.
+
     Args:
         contract: a compiled contract.
 
     Returns:
-        Sentences naming the concrete entities each condition is about.
+        Sentences naming the concrete entities each condition is about, then one closing note
+        on preconditions and unknown facts.
     """
     lines: list[str] = []
     for condition in contract.invariants:
-        lines.append(f"Always: {_sentence(condition)}")
+        lines.append(f"In every state, from start to finish: {_sentence(condition)}")
     for condition in contract.guards:
-        lines.append(f"Before every {condition.action}: {_sentence(condition)}")
+        lines.append(f"{_guard_scope(condition.action)}: {_sentence(condition)}")
     for condition in contract.aborts:
-        lines.append(f"Stop at once if: {_sentence(condition)}")
+        lines.append(f"Never let this happen (execution halts at once): {_sentence(condition)}")
+    lines.append(
+        "Every step must also meet its action's own preconditions (be next to what it picks "
+        "up, hold what it puts down or hands over). A fact the scene does not state counts "
+        "against the plan: if a rule depends on it, make the plan safe whatever its value."
+    )
     return lines
 
 
+def _guard_scope(action: str | None) -> str:
+    if not action:
+        return "Just before every step"
+    spec = ACTION_SPECS.get(action)
+    what = f" ({spec.summary})" if spec is not None else ""
+    return f"Just before every {action} step{what}"
+
+
 def _sentence(condition: ContractCondition) -> str:
-    about = ", ".join(f"{k} = {v}" for k, v in sorted(condition.bindings.items()))
-    text = condition.description.rstrip(".")
-    return f"{text} ({about}) [{condition.id}]" if about else f"{text} [{condition.id}]"
+    text = condition.description.strip().rstrip(".")
+    # Entities by their ids (what a plan names); other values with the variable they set.
+    entities = [str(v) for _, v in sorted(condition.bindings.items())
+                if isinstance(v, str) and f"#{v}" in condition.formula]
+    values = [f"{k} = {v}" for k, v in sorted(condition.bindings.items())
+              if str(v) not in entities]
+    about = "; ".join(part for part in (", ".join(entities), ", ".join(values)) if part)
+    where = f" Applies to: {about}." if about else ""
+    arguments = [f"@{name} is that step's {name}" for name in ("object", "target")
+                 if f"@{name}" in condition.formula]
+    args = f", where {' and '.join(arguments)}" if arguments else ""
+    return f"{text}.{where} Condition: {condition.formula}{args} [{condition.id}]"
