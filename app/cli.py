@@ -34,14 +34,21 @@ def serve(
     """Serve the SafeGate API (embedded default: SQLite file, symbolic analyzer, no network)."""
     import uvicorn
 
+    from app.api.observability import configure_logging
+    from app.config import Settings
+
+    log_level = Settings().log_level
+    configure_logging(log_level)
     uvicorn.run(
         "app.main:create_app",
         factory=True,
         host=host,
         port=port,
         workers=workers,
-        log_level="info",
+        log_level=log_level,
+        log_config=None,
         access_log=False,
+        timeout_graceful_shutdown=10,
     )
 
 

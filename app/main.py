@@ -11,11 +11,24 @@ from __future__ import annotations
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
-from fastapi import FastAPI
+from fastapi import Depends, FastAPI
 
-from app.api import problems
-from app.api.routes import contracts, gate, health, templates, vocabulary
+from app.api import observability, problems
+from app.api.deps import require_key_when_locked, robot_writes
+from app.api.routes import (
+    contracts,
+    curator,
+    extensions,
+    gate,
+    health,
+    keys,
+    monitor,
+    templates,
+    verify,
+    vocabulary,
+)
 from app.config import Settings
+from app.metrics import Metrics
 from app.services import Services, build_services
 
 
@@ -29,10 +42,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         A FastAPI app whose lifespan opens and closes every resource.
     """
     resolved = settings or Settings()
+    metrics = Metrics()
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-        services: Services = build_services(resolved)
+        services: Services = build_services(resolved, metrics=metrics)
         app.state.services = services
         try:
             yield
@@ -44,10 +58,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="0.1.0",
         summary="Pre-execution safety gate and Task Safety Contracts for LLM-controlled robots",
         lifespan=lifespan,
+        # With SAFEGATE_AUTH=keys, every route (websockets too) needs a valid key.
+        dependencies=[Depends(require_key_when_locked)],
     )
     app.state.settings = resolved
     problems.install(app)
-    for router in (health.router, gate.router, contracts.router, templates.router,
-                   vocabulary.router):
+    observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes)
+    for router in (health.router, contracts.router, templates.router, vocabulary.router,
+                   extensions.router, keys.router, curator.router):
         app.include_router(router)
+    # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.
+    for router in (gate.router, verify.router, monitor.router):
+        app.include_router(router, dependencies=[Depends(robot_writes)])
     return app

@@ -1,17 +1,108 @@
-"""Dependencies for routes, as `Annotated` aliases: the services built in the lifespan."""
+"""Dependencies for routes, as `Annotated` aliases: the services, and who may call.
+
+`ServicesDep` is the services built in the lifespan (works on HTTP and websocket routes).
+Access, by role (see `app/api/auth.py` for the rules and the 401/403 answers):
+- `ReadAccess`: reads; open in `auth=open`, any valid key with `auth=keys`.
+- `RobotAccess`: gate, answers, verify, monitor; open in `auth=open`, else robot or admin.
+- `CuratorKey`: template writes and re-evaluation; always a curator or admin key.
+- `AdminKey`: key management; always an admin key.
+- `AnyKey`: always some valid key (e.g. "who am I").
+`robot_writes` is the router-wide form for robot routers (reads as `ReadAccess`, the rest as
+`RobotAccess`). `require_key_when_locked` is installed app-wide by `create_app`, so with
+`auth=keys` no route, websockets included, answers without a valid key, whatever its own
+dependencies say.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Annotated
 
-from fastapi import Depends, Request
+from fastapi import Depends
+from starlette.exceptions import WebSocketException
+from starlette.requests import HTTPConnection
+from starlette.status import WS_1008_POLICY_VIOLATION
 
+from app.api.auth import (
+    ADMIN_ROLES,
+    ANY_ROLE,
+    CURATOR_ROLES,
+    ROBOT_ROLES,
+    authorize,
+    is_open_path,
+)
+from app.domain.errors import SafeGateError
 from app.services import Services
+from app.store.records import ApiKeyRecord, ApiKeyRole
+
+_READ_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
 
 
-def get_services(request: Request) -> Services:
-    services: Services = request.app.state.services
+def get_services(connection: HTTPConnection) -> Services:
+    services: Services = connection.app.state.services
     return services
 
 
 ServicesDep = Annotated[Services, Depends(get_services)]
+
+
+def _authorize(
+    connection: HTTPConnection,
+    services: Services,
+    roles: frozenset[ApiKeyRole],
+    *,
+    open_when_open: bool,
+) -> ApiKeyRecord | None:
+    try:
+        return authorize(connection, services, roles, open_when_open=open_when_open)
+    except SafeGateError as error:
+        if connection.scope.get("type") == "websocket":
+            raise WebSocketException(WS_1008_POLICY_VIOLATION, reason=error.detail) from error
+        raise
+
+
+def require_role(*roles: ApiKeyRole) -> Callable[[HTTPConnection, Services], ApiKeyRecord]:
+    """A dependency that always needs a key with one of `roles` (401 without, 403 if wrong)."""
+    accepted = frozenset(roles)
+
+    def dependency(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord:
+        key = _authorize(connection, services, accepted, open_when_open=False)
+        assert key is not None  # authorize raises rather than answer None here
+        return key
+
+    return dependency
+
+
+def allow_open(*roles: ApiKeyRole) -> Callable[[HTTPConnection, Services], ApiKeyRecord | None]:
+    """A dependency open in `auth=open` mode (None) that needs one of `roles` with `auth=keys`."""
+    accepted = frozenset(roles)
+
+    def dependency(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord | None:
+        return _authorize(connection, services, accepted, open_when_open=True)
+
+    return dependency
+
+
+def require_key_when_locked(connection: HTTPConnection, services: ServicesDep) -> None:
+    """App-wide: with `auth=keys` every route but the probes and the page shell needs a key."""
+    if not is_open_path(connection.url.path):
+        _authorize(connection, services, ANY_ROLE, open_when_open=True)
+
+
+def robot_writes(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord | None:
+    """Router-wide access for robot routers: reads as `ReadAccess`, the rest as `RobotAccess`.
+
+    Install with `app.include_router(router, dependencies=[Depends(robot_writes)])`; websocket
+    routes of such a router count as robot operations.
+    """
+    reading = connection.scope.get("method") in _READ_METHODS
+    return _authorize(
+        connection, services, ANY_ROLE if reading else ROBOT_ROLES, open_when_open=True
+    )
+
+
+ReadAccess = Annotated[ApiKeyRecord | None, Depends(allow_open(*ANY_ROLE))]
+RobotAccess = Annotated[ApiKeyRecord | None, Depends(allow_open(*ROBOT_ROLES))]
+CuratorKey = Annotated[ApiKeyRecord, Depends(require_role(*CURATOR_ROLES))]
+AdminKey = Annotated[ApiKeyRecord, Depends(require_role(*ADMIN_ROLES))]
+AnyKey = Annotated[ApiKeyRecord, Depends(require_role(*ANY_ROLE))]

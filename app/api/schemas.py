@@ -12,6 +12,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from app.domain.binding import BindingResult
 from app.domain.contracts import Contract, ContractCondition, planner_constraints
 from app.domain.models import HazardProposal, UnknownFact
+from app.domain.template_validation import suggest_template
 from app.services.gate import Decided
 from app.store.records import ContractRecord
 
@@ -111,19 +112,7 @@ def unknown_out(unknown: UnknownFact) -> UnknownOut:
 
 def suggested_template(proposal: HazardProposal) -> dict[str, Any]:
     """A template skeleton a curator can start from for an unbound hazard."""
-    return {
-        "id": f"{proposal.category.value}.{proposal.hazard_class}",
-        "name": proposal.hazard_class.replace("_", " ").capitalize(),
-        "category": proposal.category.value,
-        "hazard_class": proposal.hazard_class,
-        "description": proposal.mechanism,
-        "severity": proposal.severity.value,
-        "preventability": proposal.preventability.value,
-        "variables": [{"name": name, "type": "entity"} for name in sorted(proposal.entities)],
-        "invariants": [],
-        "guards": [],
-        "aborts": [],
-    }
+    return suggest_template(proposal)
 
 
 def gate_response(decided: Decided) -> GateResponse:

@@ -1,6 +1,8 @@
 """The service container: everything a running gate needs, built once per app in the lifespan.
 
-In: settings. Out: `Services` (engine, repository, template cache, analyzer, policy).
+In: settings. Out: `Services` (engine, repository, template cache, analyzer, policy). The
+analyzer is symbolic, LLM (through `app.adapters.llm`, cached in the repository) or their
+ensemble, as `SAFEGATE_ANALYZER` says.
 Fails: any start-up failure (database unreachable, migration or seed error) propagates, so the
 app never serves with a half-built gate.
 """
@@ -8,15 +10,18 @@ app never serves with a half-built gate.
 from __future__ import annotations
 
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from sqlalchemy.engine import Engine
 
+from app.adapters.llm import AnalysisCache, LitellmClient, LlmAnalyzer, LlmConfig
 from app.config import Settings
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.binding import TemplateIndex
+from app.domain.ensemble import EnsembleAnalyzer
 from app.domain.gate import GatePolicy
 from app.domain.pipeline import Analyzer
+from app.metrics import Metrics
 from app.store import Repository, create_engine_for, migrate, seed_templates
 
 
@@ -48,17 +53,63 @@ class Services:
     templates: TemplateCache
     analyzer: Analyzer
     policy: GatePolicy
+    metrics: Metrics = field(default_factory=Metrics)
 
     def close(self) -> None:
         self.engine.dispose()
 
 
-def build_analyzer(settings: Settings) -> Analyzer:
-    """The Stage 1 analyzer the settings ask for (only the symbolic one ships offline)."""
-    return SymbolicAnalyzer()
+def llm_config(settings: Settings) -> LlmConfig:
+    """The LLM connection the settings describe.
+
+    Args:
+        settings: with `llm_model` (any litellm model string), `llm_api_base`, `llm_api_key`
+            and `llm_timeout` (seconds).
+
+    Returns:
+        The config for `LitellmClient`.
+
+    Raises:
+        ValueError: no `SAFEGATE_LLM_MODEL` is set.
+    """
+    if not settings.llm_model:
+        raise ValueError(
+            f"SAFEGATE_ANALYZER={settings.analyzer} needs SAFEGATE_LLM_MODEL "
+            "(a litellm model string such as openai/gpt-4o-mini or ollama/llama3)"
+        )
+    return LlmConfig(
+        model=settings.llm_model,
+        api_base=settings.llm_api_base,
+        api_key=settings.llm_api_key,
+        timeout=settings.llm_timeout,
+    )
 
 
-def build_services(settings: Settings) -> Services:
+def build_analyzer(settings: Settings, cache: AnalysisCache | None = None) -> Analyzer:
+    """The Stage 1 analyzer the settings ask for.
+
+    `symbolic` is offline and needs nothing else; `llm` asks the configured LLM; `ensemble`
+    runs both and reports the union of their hazards and unknowns.
+
+    Args:
+        settings: `analyzer` and, for `llm`/`ensemble`, the `llm_*` settings.
+        cache: where LLM analyses are cached (the repository); None disables caching.
+
+    Returns:
+        The analyzer.
+
+    Raises:
+        ValueError: an LLM is asked for but no model is configured.
+    """
+    if settings.analyzer == "symbolic":
+        return SymbolicAnalyzer()
+    llm = LlmAnalyzer(LitellmClient(llm_config(settings)), cache=cache)
+    if settings.analyzer == "llm":
+        return llm
+    return EnsembleAnalyzer([SymbolicAnalyzer(), llm])
+
+
+def build_services(settings: Settings, *, metrics: Metrics | None = None) -> Services:
     """Connect, migrate, seed and load."""
     engine = create_engine_for(settings.database_url)
     if settings.migrate_on_startup:
@@ -71,6 +122,7 @@ def build_services(settings: Settings) -> Services:
         engine=engine,
         repository=repository,
         templates=TemplateCache(repository),
-        analyzer=build_analyzer(settings),
+        analyzer=build_analyzer(settings, cache=repository),
         policy=GatePolicy(theta=settings.theta),
+        metrics=metrics or Metrics(),
     )

@@ -67,6 +67,7 @@ def decide(
         ),
         contract,
     )
+    services.metrics.record_decision(record.decision, record.rule, result.timings_ms)
     return Decided(record=record, result=result)
 
 

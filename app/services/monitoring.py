@@ -223,29 +223,40 @@ class MonitorService:
                            live.id)
 
     async def flush(self, live: LiveSession) -> None:
-        """Write the pending log entries and counters (and retry an unsaved halt)."""
+        """Write the pending log entries and counters (and retry an unsaved halt).
+
+        Writes run as tasks shielded from cancellation and each flush first waits for the
+        previous one, so batches reach the log whole and in order even when a connection
+        is torn down mid-write.
+        """
         async with live.flush_lock:
+            if live.writing is not None:
+                await asyncio.shield(live.writing)
             if not live.halt_saved:
                 await self._save_halt(live)
             if not live.log and not live.counters_dirty:
                 return
             entries, live.log = live.log, []
             live.counters_dirty = False
-            counters = live.monitor.counters.to_json()
+            live.writing = asyncio.get_running_loop().create_task(
+                self._write(live, entries, live.monitor.counters.to_json()))
+            await asyncio.shield(live.writing)
 
-            def write() -> None:
-                # Counters first: if the append then fails, re-queueing duplicates nothing.
-                self._repository.update_monitor_session(live.id, counters=counters)
-                if entries:
-                    self._repository.append_monitor_event(live.id, "messages",
-                                                          {"messages": entries})
+    async def _write(self, live: LiveSession, entries: list[dict[str, Any]],
+                     counters: dict[str, Any]) -> None:
+        def write() -> None:
+            # Counters first: if the append then fails, re-queueing duplicates nothing.
+            self._repository.update_monitor_session(live.id, counters=counters)
+            if entries:
+                self._repository.append_monitor_event(live.id, "messages",
+                                                      {"messages": entries})
 
-            try:
-                await anyio.to_thread.run_sync(write)
-            except SafeGateError:
-                _log.exception("could not write the log of monitor session %s", live.id)
-                live.log[:0] = entries
-                live.counters_dirty = True
+        try:
+            await anyio.to_thread.run_sync(write)
+        except SafeGateError:
+            _log.exception("could not write the log of monitor session %s", live.id)
+            live.log[:0] = entries
+            live.counters_dirty = True
 
     async def flush_periodically(self, live: LiveSession) -> None:
         """Flush every `FLUSH_SECONDS` until cancelled (one task per runtime connection)."""

@@ -55,6 +55,7 @@ class LiveSession:
     clients: int = 0
     subscribers: set[Subscriber] = field(default_factory=set)
     flush_lock: asyncio.Lock = field(default_factory=asyncio.Lock)
+    writing: asyncio.Task[None] | None = None
 
     def record(self, message: object, verdict: Verdict) -> None:
         """Remember one exchange for the event log (and for replay after a restart)."""

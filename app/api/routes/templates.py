@@ -1,38 +1,121 @@
-"""The Hazard Template Library over HTTP: browse and read templates with their versions."""
+"""The Hazard Template Library over HTTP: browse, validate, write and (de)activate templates.
+
+Reads and `POST /templates/validate` (which stores nothing) follow `ReadAccess`; every write needs
+a curator (or admin) key, whatever the auth mode. A write answers the stored template with the
+validation's `warnings` (e.g. a hazard class already covered); an invalid document is a 422
+problem+json whose `errors` point at each field and, in a formula, the line and column.
+"""
 
 from __future__ import annotations
 
 from typing import Any
 
-from fastapi import APIRouter
+from fastapi import APIRouter, Body, status
 
-from app.api.deps import ServicesDep
-from app.domain.models import Category, TemplateStatus
+from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.domain.models import Category, HazardTemplate, TemplateStatus
+from app.services import curation
+from app.services.curation import Curated
+from app.store.records import ApiKeyRecord
 
 router = APIRouter(tags=["templates"])
+
+_DOCUMENT = Body(  # FastAPI's way to take the raw JSON body, so our validator reports on it
+    ...,
+    examples=[{
+        "id": "thermal.iron_left_on_near_child", "name": "Hot iron near a child",
+        "category": "physical", "hazard_class": "thermal_burn",
+        "description": "A hot iron burns a child who touches it.", "severity": "high",
+        "preventability": "preventable",
+        "variables": [{"name": "obj", "type": "object"}],
+        "guards": [{"id": "no_hot_handover", "action": "HandOver",
+                    "formula": "@object != $obj or not hot($obj)",
+                    "description": "Never hand over the iron while it is hot."}],
+    }],
+)
+
+
+def _author(key: ApiKeyRecord) -> str:
+    return key.name or f"key {key.id}"
+
+
+def _curated(curated: Curated) -> dict[str, Any]:
+    body: dict[str, Any] = curated.template.model_dump(mode="json")
+    body["warnings"] = [warning.as_dict() for warning in curated.warnings]
+    return body
+
+
+def _template(template: HazardTemplate) -> dict[str, Any]:
+    return template.model_dump(mode="json")
 
 
 @router.get("/templates")
 def list_templates(
     services: ServicesDep,
+    _: ReadAccess,
     category: Category | None = None,
     hazard_class: str | None = None,
     status: TemplateStatus | None = None,
+    q: str | None = None,
 ) -> dict[str, Any]:
-    """Templates at their current version, filtered by category, hazard class and status."""
+    """Templates at their current version, filtered by category, class, status and search words."""
     templates = services.repository.list_templates(
         category=category, hazard_class=hazard_class, status=status
     )
-    return {
-        "count": len(templates),
-        "templates": [t.model_dump(mode="json") for t in templates],
-    }
+    found = curation.search(templates, q)
+    return {"count": len(found), "templates": [_template(t) for t in found]}
+
+
+@router.post("/templates/validate")
+def validate_template(
+    services: ServicesDep, _: ReadAccess, document: Any = _DOCUMENT
+) -> dict[str, Any]:
+    """Validate a template without storing it: `valid`, `errors` and `warnings`."""
+    return curation.validate(services, document).as_dict()
+
+
+@router.post("/templates", status_code=status.HTTP_201_CREATED)
+def create_template(
+    services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
+) -> dict[str, Any]:
+    """Validate a new template and store it as a draft (activate it to put it to use)."""
+    return _curated(curation.create(services, document, _author(key)))
 
 
 @router.get("/templates/{template_id}")
-def get_template(template_id: str, services: ServicesDep) -> dict[str, Any]:
+def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
     """One template at its current version, with every version kept."""
     history = services.repository.get_template_history(template_id)
-    body: dict[str, Any] = history.current.model_dump(mode="json")
+    body = _template(history.current)
     body["versions"] = [v.model_dump(mode="json") for v in history.versions]
     return body
+
+
+@router.get("/templates/{template_id}/versions/{version}")
+def get_template_version(
+    template_id: str, version: int, services: ServicesDep, _: ReadAccess
+) -> dict[str, Any]:
+    """One template as it was at one version (contracts name the versions they used)."""
+    return _template(services.repository.get_template(template_id, version))
+
+
+@router.put("/templates/{template_id}")
+def revise_template(
+    template_id: str, services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
+) -> dict[str, Any]:
+    """Store a revision as the next version; earlier versions stay readable."""
+    return _curated(curation.revise(services, template_id, document, _author(key)))
+
+
+@router.post("/templates/{template_id}/activate")
+def activate_template(template_id: str, services: ServicesDep, _: CuratorKey) -> dict[str, Any]:
+    """Put a template to use: the gate binds it from the next request on."""
+    return _template(curation.activate(services, template_id))
+
+
+@router.post("/templates/{template_id}/deprecate")
+def deprecate_template(
+    template_id: str, services: ServicesDep, _: CuratorKey
+) -> dict[str, Any]:
+    """Retire a template: the gate stops binding it; its versions stay readable."""
+    return _template(curation.deprecate(services, template_id))

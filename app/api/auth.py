@@ -1,0 +1,145 @@
+"""API keys on HTTP and websocket connections: who is calling, and may they?
+
+In: a connection's `Authorization: Bearer <key>` or `X-API-Key` header (for websockets also an
+`api_key` query parameter, since browsers cannot set headers on them), the services (settings and
+repository) and the roles an endpoint accepts. Out: the caller's `ApiKeyRecord`, or None for an
+endpoint left open in `auth=open` mode. Fails: `Unauthorized` (401) when a key is needed and
+missing, or presented but unknown, revoked or malformed (a presented key is always checked, even
+where none is needed); `Forbidden` (403) when the key's role is not accepted. On websockets both
+become a `WebSocketException` with close code 1008 before the handshake is accepted.
+
+Roles: robot (gate, answers, verify, monitor), curator (template writes, re-evaluation), admin
+(keys, and everything the others may do). Template writes and re-evaluation always need a key;
+with `auth=keys` every endpoint does, except the probes and the curator page's static shell
+(it holds no data; the page calls the API with the key the curator types in).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection
+
+from starlette.exceptions import WebSocketException
+from starlette.requests import HTTPConnection
+from starlette.status import WS_1008_POLICY_VIOLATION
+from starlette.websockets import WebSocket
+
+from app.domain.errors import Forbidden, SafeGateError, Unauthorized
+from app.services import Services
+from app.services.access import find_key
+from app.store.records import ApiKeyRecord, ApiKeyRole
+
+ROBOT_ROLES = frozenset({ApiKeyRole.ROBOT, ApiKeyRole.ADMIN})
+CURATOR_ROLES = frozenset({ApiKeyRole.CURATOR, ApiKeyRole.ADMIN})
+ADMIN_ROLES = frozenset({ApiKeyRole.ADMIN})
+ANY_ROLE = frozenset(ApiKeyRole)
+
+OPEN_PATHS = frozenset({"/healthz", "/readyz", "/curator", "/curator/"})
+OPEN_PREFIXES = ("/curator/static/",)
+_CACHE_ATTRIBUTE = "safegate_api_key"
+_HOW = "send 'Authorization: Bearer <key>' or 'X-API-Key: <key>'"
+
+
+def presented_secret(connection: HTTPConnection) -> str | None:
+    """The key the client sent, or None when it sent none.
+
+    Raises:
+        Unauthorized: an `Authorization` header that is not `Bearer <key>`.
+    """
+    header = connection.headers.get("authorization")
+    if header is not None:
+        scheme, _, token = header.strip().partition(" ")
+        if scheme.lower() != "bearer" or not token.strip():
+            raise Unauthorized(f"malformed Authorization header; {_HOW}")
+        return token.strip()
+    key = connection.headers.get("x-api-key")
+    if key is not None:
+        return key.strip()
+    if connection.scope.get("type") == "websocket":
+        return connection.query_params.get("api_key")
+    return None
+
+
+def authenticate(connection: HTTPConnection, services: Services) -> ApiKeyRecord | None:
+    """The caller's active key (looked up once per connection), or None when none was sent.
+
+    Raises:
+        Unauthorized: a key was sent but is unknown, revoked or malformed.
+    """
+    state = connection.scope.setdefault("state", {})
+    if _CACHE_ATTRIBUTE in state:
+        cached: ApiKeyRecord | None = state[_CACHE_ATTRIBUTE]
+        return cached
+    secret = presented_secret(connection)
+    key = None
+    if secret is not None:
+        key = find_key(services.repository, secret)
+        if key is None:
+            raise Unauthorized("the API key is unknown or revoked")
+    state[_CACHE_ATTRIBUTE] = key
+    return key
+
+
+def authorize(
+    connection: HTTPConnection,
+    services: Services,
+    roles: Collection[ApiKeyRole],
+    *,
+    open_when_open: bool,
+) -> ApiKeyRecord | None:
+    """Check the caller against the roles an endpoint accepts.
+
+    Args:
+        connection: the HTTP request or websocket.
+        services: the app's services (settings and repository).
+        roles: the roles accepted.
+        open_when_open: True when the endpoint needs no key in `auth=open` mode.
+
+    Returns:
+        The caller's key, or None when the endpoint is open and no key was sent.
+
+    Raises:
+        Unauthorized: a key is needed and missing, or the key sent is not valid.
+        Forbidden: the key's role is not among `roles`.
+    """
+    key = authenticate(connection, services)
+    if key is None:
+        if open_when_open and services.settings.auth == "open":
+            return None
+        raise Unauthorized(f"this endpoint needs an API key; {_HOW}")
+    if key.role not in roles:
+        wanted = " or ".join(sorted(role.value for role in roles))
+        raise Forbidden(f"a {key.role.value} key may not do this; it needs a {wanted} key")
+    return key
+
+
+def is_open_path(path: str) -> bool:
+    """Whether a path needs no key even with `auth=keys` (probes, the page's static shell)."""
+    return path in OPEN_PATHS or path.startswith(OPEN_PREFIXES)
+
+
+def authorize_websocket(
+    websocket: WebSocket,
+    services: Services,
+    roles: Collection[ApiKeyRole] = ROBOT_ROLES,
+    *,
+    open_when_open: bool = True,
+) -> ApiKeyRecord | None:
+    """`authorize` for a websocket; call it before `websocket.accept()`.
+
+    Args:
+        websocket: the connection (the key may also come as the `api_key` query parameter).
+        services: the app's services.
+        roles: the roles accepted (robots by default: the monitor's clients).
+        open_when_open: True when no key is needed in `auth=open` mode.
+
+    Returns:
+        The caller's key, or None when the endpoint is open and no key was sent.
+
+    Raises:
+        WebSocketException: code 1008 (policy violation) with the reason; Starlette then
+            refuses the handshake.
+    """
+    try:
+        return authorize(websocket, services, roles, open_when_open=open_when_open)
+    except SafeGateError as error:
+        raise WebSocketException(WS_1008_POLICY_VIOLATION, reason=error.detail) from error

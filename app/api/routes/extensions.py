@@ -1,0 +1,95 @@
+"""The library-extension loop over HTTP: what waits for a template, and deciding it again.
+
+`GET /extensions/pending` lists requests whose latest decision defers with `extend_library`,
+grouped by the hazard class they wait for. Once an active template covers a class, a curator
+re-decides them one by one (`POST /gate/{id}/reevaluate`) or all at once
+(`POST /extensions/reevaluate {"hazard_class": ...}`); re-evaluation runs the normal pipeline
+and each new decision is linked to the one it follows.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import APIRouter
+from pydantic import BaseModel, Field
+
+from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.api.schemas import GateResponse, gate_response
+from app.services import extensions
+from app.services.extensions import PendingClass, WaitingRequest
+
+router = APIRouter(tags=["extensions"])
+
+
+class ReevaluateClassRequest(BaseModel):
+    hazard_class: str = Field(min_length=1, max_length=120, examples=["sharp_laceration"])
+
+
+class ReevaluatedRequest(BaseModel):
+    reevaluated_request_id: str
+    decision: GateResponse
+
+
+class ReevaluateClassResponse(BaseModel):
+    hazard_class: str
+    count: int
+    results: list[ReevaluatedRequest]
+
+
+def _waiting(waiting: WaitingRequest, hazard_class: str) -> dict[str, Any]:
+    record = waiting.record
+    return {
+        "request_id": record.id,
+        "command": record.request.command,
+        "created_at": record.created_at.isoformat() if record.created_at else None,
+        "parent_request_id": record.parent_request_id,
+        "hazards": [
+            {"hazard_class": h.hazard_class, "mechanism": h.mechanism,
+             "severity": h.severity.value, "entities": dict(h.entities)}
+            for h in waiting.unbound
+            if h.hazard_class == hazard_class
+        ],
+        "also_waiting_for": sorted(waiting.hazard_classes - {hazard_class}),
+    }
+
+
+def _group(group: PendingClass) -> dict[str, Any]:
+    return {
+        "hazard_class": group.hazard_class,
+        "count": len(group.requests),
+        "covered": bool(group.covered_by),
+        "covered_by": list(group.covered_by),
+        "requests": [_waiting(w, group.hazard_class) for w in group.requests],
+        "suggested_template": group.suggested_template,
+    }
+
+
+@router.get("/extensions/pending")
+def pending_extensions(services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
+    """Requests waiting for a library extension, grouped by hazard class."""
+    groups = extensions.pending_by_class(services)
+    request_ids = {w.record.id for g in groups for w in g.requests}
+    return {"count": len(request_ids), "classes": [_group(g) for g in groups]}
+
+
+@router.post("/extensions/reevaluate", response_model=ReevaluateClassResponse)
+def reevaluate_class(
+    body: ReevaluateClassRequest, services: ServicesDep, _: CuratorKey
+) -> ReevaluateClassResponse:
+    """Decide again every request waiting on a class that an active template now covers."""
+    results = extensions.reevaluate_class(services, body.hazard_class)
+    return ReevaluateClassResponse(
+        hazard_class=body.hazard_class,
+        count=len(results),
+        results=[
+            ReevaluatedRequest(reevaluated_request_id=old, decision=gate_response(decided))
+            for old, decided in results
+        ],
+    )
+
+
+@router.post("/gate/{request_id}/reevaluate", response_model=GateResponse)
+def reevaluate_request(request_id: str, services: ServicesDep, _: CuratorKey) -> GateResponse:
+    """Decide a waiting request again with today's library (its chain's latest decision)."""
+    return gate_response(extensions.reevaluate_request(services, request_id))

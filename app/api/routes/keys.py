@@ -1,0 +1,52 @@
+"""API keys over HTTP, for admins (the first admin key comes from `safegate keys create`).
+
+The secret of a new key is in the creation answer only; the store keeps its SHA-256.
+`GET /keys/me` tells any key holder who they are (the curator page uses it).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import APIRouter, status
+from pydantic import BaseModel, Field
+
+from app.api.deps import AdminKey, AnyKey, ServicesDep
+from app.services.access import issue_api_key
+from app.store.records import ApiKeyRecord, ApiKeyRole
+
+router = APIRouter(tags=["keys"])
+
+
+class CreateKeyRequest(BaseModel):
+    role: ApiKeyRole
+    name: str = Field(min_length=1, max_length=200)
+
+
+def _key(record: ApiKeyRecord) -> dict[str, Any]:
+    return record.model_dump(mode="json", exclude={"key_hash"})
+
+
+@router.get("/keys/me")
+def whoami(key: AnyKey) -> dict[str, Any]:
+    """The key the caller presented: id, role, name."""
+    return _key(key)
+
+
+@router.get("/keys")
+def list_keys(services: ServicesDep, _: AdminKey) -> dict[str, Any]:
+    """Every key, revoked ones included (never their secrets)."""
+    return {"keys": [_key(k) for k in services.repository.list_api_keys()]}
+
+
+@router.post("/keys", status_code=status.HTTP_201_CREATED)
+def create_key(body: CreateKeyRequest, services: ServicesDep, _: AdminKey) -> dict[str, Any]:
+    """Issue a key; the answer holds its secret, shown this once."""
+    record, secret = issue_api_key(services.repository, body.role, body.name)
+    return {**_key(record), "key": secret}
+
+
+@router.delete("/keys/{key_id}")
+def revoke_key(key_id: str, services: ServicesDep, _: AdminKey) -> dict[str, Any]:
+    """Revoke a key for good."""
+    return _key(services.repository.revoke_api_key(key_id))

@@ -1,0 +1,190 @@
+"""Runtime monitoring (Stage 6) over HTTP and websockets.
+
+- `POST /monitor` opens a session for a contract -> 201 `{"session_id": ...}`.
+- `WS /monitor/{session_id}`: the runtime's `before`/`after` messages, one answer each.
+- `WS /monitor/{session_id}/events`: violations and refusals as they happen, for any number of
+  listeners (each first gets the session's status).
+- `GET /monitor/{session_id}/summary`: the MonitorSummary.
+A websocket to an unknown session is accepted, told `{"type": "error", ...}` and closed with
+code 4404; a database failure while loading closes with 1011. Nothing here decides anything.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Depends, WebSocket, WebSocketDisconnect, status
+from pydantic import BaseModel, ConfigDict, Field
+from starlette.requests import HTTPConnection
+
+from app.api.auth import ANY_ROLE, ROBOT_ROLES, authorize_websocket
+from app.api.deps import ReadAccess, RobotAccess
+from app.domain.errors import NotFound, SafeGateError
+from app.domain.models import InitialState
+from app.services.monitoring import MonitorService
+from app.services.monitoring_sessions import LiveSession
+
+router = APIRouter(tags=["monitor"])
+
+CLOSE_NOT_FOUND = 4404
+CLOSE_UNAVAILABLE = 1011
+CLOSE_TOO_SLOW = 1013
+
+
+async def monitoring_of(connection: HTTPConnection) -> MonitorService:
+    """The app's monitoring service, created on first use (on the event loop, so once)."""
+    state = connection.app.state
+    service: MonitorService | None = getattr(state, "monitoring", None)
+    if service is None:
+        service = state.monitoring = MonitorService(state.services)
+    return service
+
+
+MonitoringDep = Annotated[MonitorService, Depends(monitoring_of)]
+
+
+class MonitorOpenRequest(BaseModel):
+    """Open a monitoring session."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    contract_id: str = Field(min_length=1, max_length=64)
+    initial_state: InitialState | None = None
+
+
+class MonitorOpenResponse(BaseModel):
+    session_id: str
+    contract_id: str
+    halted: bool
+
+
+class ViolationOut(BaseModel):
+    timestamp: str
+    action: dict[str, Any]
+    kind: str
+    condition_id: str
+    formula: str
+    description: str
+    seq: int
+    phase: str
+    established: bool
+    unknown_facts: list[str]
+
+
+class MonitorSummaryResponse(BaseModel):
+    """The paper's MonitorSummary (guards: one per guard per action of its type; invariants:
+    one per invariant per state; aborts: one per abort per state, before and after)."""
+
+    session_id: str
+    contract_id: str
+    actions_checked: int
+    states_checked: int
+    guards_checked: int
+    invariants_checked: int
+    aborts_checked: int
+    violations: list[ViolationOut]
+    halted: bool
+    messages: int
+    errors: int
+    refused: int
+    checks_by_condition: dict[str, int]
+    last_seq: int | None = None
+    pending_seq: int | None = None
+
+
+@router.post("/monitor", response_model=MonitorOpenResponse,
+             status_code=status.HTTP_201_CREATED)
+def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep,
+                 _: RobotAccess) -> MonitorOpenResponse:
+    """Open a session; the initial state defaults to the gate request's scene and robot."""
+    record = monitoring.open_session(body.contract_id, body.initial_state)
+    assert record.id is not None
+    return MonitorOpenResponse(session_id=record.id, contract_id=record.contract_id,
+                               halted=record.halted)
+
+
+@router.get("/monitor/{session_id}/summary", response_model=MonitorSummaryResponse)
+async def monitor_summary(session_id: str, monitoring: MonitoringDep,
+                          _: ReadAccess) -> MonitorSummaryResponse:
+    """What the session has checked, its violations, and whether it is halted."""
+    contract_id, summary = await monitoring.summary(session_id)
+    return MonitorSummaryResponse(session_id=session_id, contract_id=contract_id,
+                                  **summary.to_wire())
+
+
+async def _refuse_connection(websocket: WebSocket, error: SafeGateError) -> None:
+    await websocket.send_json({"type": "error", "seq": None, "detail": error.detail,
+                               "halted": False})
+    code = CLOSE_NOT_FOUND if isinstance(error, NotFound) else CLOSE_UNAVAILABLE
+    await websocket.close(code=code, reason=type(error).__name__)
+
+
+@router.websocket("/monitor/{session_id}")
+async def monitor_socket(websocket: WebSocket, session_id: str,
+                         monitoring: MonitoringDep) -> None:
+    """The runtime's channel: one answer per message, in order (robot or admin key)."""
+    authorize_websocket(websocket, websocket.app.state.services, ROBOT_ROLES)
+    await websocket.accept()
+    try:
+        live = await monitoring.attach(session_id)
+    except SafeGateError as error:
+        await _refuse_connection(websocket, error)
+        return
+    flusher = asyncio.get_running_loop().create_task(monitoring.flush_periodically(live))
+    try:
+        while True:
+            message = await websocket.receive()
+            if message["type"] == "websocket.disconnect":
+                break
+            text = message.get("text")
+            raw = text if text is not None else message.get("bytes")
+            await websocket.send_text(await monitoring.handle(live, raw))
+    except (WebSocketDisconnect, OSError):
+        pass
+    finally:
+        flusher.cancel()
+        await monitoring.detach(live)
+
+
+async def _wait_for_close(websocket: WebSocket) -> None:
+    while (await websocket.receive())["type"] != "websocket.disconnect":
+        pass  # listeners have nothing to say; anything they send is ignored
+
+
+async def _forward_events(websocket: WebSocket, live: LiveSession,
+                          monitoring: MonitorService) -> None:
+    subscriber = monitoring.subscribe(live)
+    closed = asyncio.get_running_loop().create_task(_wait_for_close(websocket))
+    try:
+        while True:
+            event_task = asyncio.get_running_loop().create_task(subscriber.queue.get())
+            done, _ = await asyncio.wait({event_task, closed},
+                                         return_when=asyncio.FIRST_COMPLETED)
+            if event_task not in done:
+                event_task.cancel()
+                return
+            event = event_task.result()
+            if event is None:
+                await websocket.close(code=CLOSE_TOO_SLOW, reason="listener too slow")
+                return
+            await websocket.send_json(event)
+    finally:
+        closed.cancel()
+        monitoring.unsubscribe(live, subscriber)
+
+
+@router.websocket("/monitor/{session_id}/events")
+async def events_socket(websocket: WebSocket, session_id: str,
+                        monitoring: MonitoringDep) -> None:
+    """A listener's channel: the session's status, then violations and refusals (any key)."""
+    authorize_websocket(websocket, websocket.app.state.services, ANY_ROLE)
+    await websocket.accept()
+    try:
+        live = await monitoring.session(session_id)
+    except SafeGateError as error:
+        await _refuse_connection(websocket, error)
+        return
+    with contextlib.suppress(WebSocketDisconnect, OSError):
+        await _forward_events(websocket, live, monitoring)

@@ -1,0 +1,125 @@
+"""API models of POST /verify (`shared/spec/plans-and-monitoring.md`) and the mapping to them.
+
+In: the request body; out: the response built from `services.verification.Verified`. Plan steps
+are taken as any JSON value so a malformed step is reported by the domain with its index
+(`plan[3]`, `plan[3].object`) rather than as a generic shape error. Fields are only added.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from app.domain.contracts import Contract, ContractCondition
+from app.domain.models import ConditionKind, InitialState
+from app.domain.verify import Undecided, Violation
+from app.services.verification import Verified
+
+MAX_PLAN_STEPS = 1000
+MAX_INLINE_CONDITIONS = 500
+
+
+class InlineCondition(BaseModel):
+    """A condition of an inline contract: its formula over entity constants (`#mug_1`)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    id: str = Field(min_length=1, max_length=200)
+    formula: str = Field(min_length=1, max_length=4000)
+    description: str = ""
+    action: str | None = None
+
+
+class InlineContract(BaseModel):
+    """A contract given in the request instead of by id (no attempt budget, no audit trail)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    invariants: list[InlineCondition] = Field(default_factory=list,
+                                              max_length=MAX_INLINE_CONDITIONS)
+    guards: list[InlineCondition] = Field(default_factory=list, max_length=MAX_INLINE_CONDITIONS)
+    aborts: list[InlineCondition] = Field(default_factory=list, max_length=MAX_INLINE_CONDITIONS)
+
+    def to_domain(self) -> Contract:
+        """The domain contract, each condition marked as coming from this request."""
+        def conditions(items: list[InlineCondition], kind: ConditionKind
+                       ) -> tuple[ContractCondition, ...]:
+            return tuple(ContractCondition(
+                id=c.id, kind=kind, formula=c.formula, description=c.description or c.id,
+                action=c.action, template_id="inline", template_version=1, bindings={})
+                for c in items)
+
+        return Contract(invariants=conditions(self.invariants, ConditionKind.INVARIANT),
+                        guards=conditions(self.guards, ConditionKind.GUARD),
+                        aborts=conditions(self.aborts, ConditionKind.ABORT))
+
+
+class VerifyRequest(BaseModel):
+    """What a planner POSTs to /verify: a plan and the contract it must keep."""
+
+    contract_id: str | None = Field(default=None, min_length=1, max_length=200)
+    contract: InlineContract | None = None
+    plan: list[Any] = Field(max_length=MAX_PLAN_STEPS)
+    initial_state: InitialState | None = None
+
+
+class ViolationOut(BaseModel):
+    """One violation (or, with `detail`, an instance the solver could not decide)."""
+
+    step: int
+    state: int
+    action: dict[str, Any] | None
+    kind: str
+    condition_id: str
+    formula: str
+    description: str
+    counterexample: dict[str, Any] = Field(default_factory=dict)
+    free: list[str] = Field(default_factory=list)
+    detail: str | None = None
+
+
+class VerifyResponse(BaseModel):
+    """The verdict: 200 whether or not the plan passes."""
+
+    ok: bool
+    violations: list[ViolationOut]
+    undecided: list[ViolationOut] = Field(default_factory=list)
+    reason: str | None = None
+    attempts: int
+    attempts_left: int | None
+    decision: str | None
+    downgraded: bool = False
+    contract_id: str | None = None
+    states_checked: int = 0
+    duration_ms: float = 0.0
+
+
+def _out(item: Violation | Undecided) -> ViolationOut:
+    return ViolationOut(
+        step=item.step, state=item.state,
+        action=None if item.action is None else dict(item.action),
+        kind=item.kind.value, condition_id=item.condition_id, formula=item.formula,
+        description=item.description,
+        counterexample=dict(item.counterexample) if isinstance(item, Violation) else {},
+        free=list(item.free) if isinstance(item, Violation) else [],
+        detail=item.detail if isinstance(item, Undecided) else None,
+    )
+
+
+def verify_response(verified: Verified) -> VerifyResponse:
+    """The response for a verification."""
+    result = verified.result
+    return VerifyResponse(
+        ok=result.ok,
+        violations=[_out(v) for v in result.violations],
+        undecided=[_out(u) for u in result.undecided],
+        reason=result.reason,
+        attempts=verified.attempts,
+        attempts_left=verified.attempts_left,
+        decision=verified.decision,
+        downgraded=verified.downgraded,
+        contract_id=verified.contract_id,
+        states_checked=result.states_checked,
+        duration_ms=verified.duration_ms,
+    )

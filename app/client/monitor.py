@@ -1,0 +1,203 @@
+"""`MonitorClient` for robot runtimes and `MonitorEvents` for dashboards (sync websockets).
+
+In: SafeGate's base URL, a session id from `GateClient.open_monitor`, and per action the action
+(`{"action": "PickupObject", "object": "mug_1"}`) with optional scene observations
+(`{"scene": {...}, "robot": {...}}`, partial: listed entities replace those with the same id).
+Out: nothing when the monitor allows; the after-state your `execute` callback observed.
+Fails: `MonitorHalted` when the session halts (now or earlier): stop the robot;
+`MonitorError` when a message could not be checked (the action is not allowed);
+`MonitorConnectionError` when the socket cannot be opened, closes, or answers out of order.
+
+The client numbers its messages `seq` = first_seq, first_seq + 1, ... A runtime that reconnects
+to a session goes on from the session's `last_seq` + 1 (see `GateClient.monitor_summary`).
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable, Iterator, Mapping
+from types import TracebackType
+from typing import Any
+
+from websockets.exceptions import ConnectionClosed, WebSocketException
+from websockets.sync.client import ClientConnection, connect
+
+from app.client.errors import MonitorConnectionError, MonitorError, MonitorHalted
+from app.client.gate import auth_headers
+
+JsonObject = dict[str, Any]
+Observation = Mapping[str, Any]
+
+
+def websocket_url(base_url: str, path: str) -> str:
+    """`http://host:port` + path as a `ws://` (or `wss://`) URL."""
+    base = base_url.rstrip("/")
+    if base.startswith("https://"):
+        base = "wss://" + base[len("https://"):]
+    elif base.startswith("http://"):
+        base = "ws://" + base[len("http://"):]
+    return base + path
+
+
+def _open(url: str, api_key: str | None, timeout: float) -> ClientConnection:
+    try:
+        # Entered by hand: the connection outlives this call and is closed by its owner.
+        return connect(url, additional_headers=auth_headers(api_key), open_timeout=timeout,
+                       max_size=2**22).__enter__()
+    except (OSError, WebSocketException) as error:
+        raise MonitorConnectionError(f"could not open {url}: {error}") from error
+
+
+class MonitorClient:
+    """One runtime's connection to a monitoring session; use it as a context manager."""
+
+    def __init__(self, base_url: str, session_id: str, *, api_key: str | None = None,
+                 first_seq: int = 1, timeout: float = 10.0) -> None:
+        """Prepare a connection (opened by `__enter__` or `connect`).
+
+        Args:
+            base_url: where SafeGate listens, e.g. `http://127.0.0.1:8000`.
+            session_id: from `POST /monitor`.
+            api_key: a robot key, when the server runs with `auth=keys`.
+            first_seq: the seq of the first action (after a reconnect: the last one + 1).
+            timeout: seconds to wait for the connection and for each answer.
+        """
+        self.url = websocket_url(base_url, f"/monitor/{session_id}")
+        self.session_id = session_id
+        self.next_seq = first_seq
+        self._api_key = api_key
+        self._timeout = timeout
+        self._socket: ClientConnection | None = None
+        self._running: tuple[int, JsonObject] | None = None
+
+    def connect(self) -> MonitorClient:
+        """Open the websocket."""
+        self._socket = _open(self.url, self._api_key, self._timeout)
+        return self
+
+    def close(self) -> None:
+        """Close the websocket."""
+        if self._socket is not None:
+            self._socket.close()
+            self._socket = None
+
+    def __enter__(self) -> MonitorClient:
+        return self.connect()
+
+    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                 trace: TracebackType | None) -> None:
+        self.close()
+
+    def _exchange(self, message: JsonObject) -> JsonObject:
+        if self._socket is None:
+            raise MonitorConnectionError("not connected: use `with MonitorClient(...)`")
+        try:
+            self._socket.send(json.dumps(message))
+            answer: JsonObject = json.loads(self._socket.recv(timeout=self._timeout))
+        except (ConnectionClosed, TimeoutError, OSError) as error:
+            raise MonitorConnectionError(f"monitor connection lost: {error}") from error
+        if answer.get("seq") != message["seq"] and answer.get("type") != "error":
+            raise MonitorConnectionError(f"answer for seq {answer.get('seq')} while waiting "
+                                         f"for seq {message['seq']}")
+        kind = answer.get("type")
+        if kind == "allow":
+            return answer
+        if kind in ("violation", "halted"):
+            raise MonitorHalted(answer)
+        raise MonitorError(answer)
+
+    def before(self, action: Mapping[str, Any], state: Observation | None = None) -> int:
+        """Ask before running an action; returns its seq when allowed.
+
+        Raises:
+            MonitorHalted: a guard or abort failed (or the session was already halted).
+            MonitorError: the message could not be checked; do not run the action.
+        """
+        seq = self.next_seq
+        message: JsonObject = {"type": "before", "seq": seq, "action": dict(action)}
+        if state is not None:
+            message["state"] = dict(state)
+        self._exchange(message)
+        self.next_seq = seq + 1
+        self._running = (seq, dict(action))
+        return seq
+
+    def after(self, state: Observation | None = None) -> None:
+        """Report that the allowed action ran, with what changed.
+
+        Raises:
+            MonitorHalted: an invariant or abort failed in the new state.
+            MonitorError: no action is running, or the report could not be checked.
+        """
+        if self._running is None:
+            raise MonitorError({"type": "error", "detail": "no allowed action is running"})
+        seq, action = self._running
+        message: JsonObject = {"type": "after", "seq": seq, "action": action}
+        if state is not None:
+            message["state"] = dict(state)
+        self._exchange(message)
+        self._running = None
+
+    def step(self, action: Mapping[str, Any],
+             execute: Callable[[], Observation | None] | None = None, *,
+             state: Observation | None = None) -> Observation | None:
+        """Check an action, run it, check the state it left: `before`, `execute()`, `after`.
+
+        Args:
+            action: the action to run.
+            execute: runs the action on the robot and returns what changed (or None to let
+                the monitor's action model predict it); None for a dry step.
+            state: an observation of the scene just before the action.
+
+        Returns:
+            What `execute` returned.
+
+        Raises:
+            MonitorHalted: the session halted, before the action (it was not run) or after.
+            MonitorError: a message could not be checked.
+        """
+        self.before(action, state)
+        observed = execute() if execute is not None else None
+        self.after(observed)
+        return observed
+
+
+class MonitorEvents:
+    """A listener on a session's violations and refusals; iterate over it for events."""
+
+    def __init__(self, base_url: str, session_id: str, *, api_key: str | None = None,
+                 timeout: float = 10.0) -> None:
+        self.url = websocket_url(base_url, f"/monitor/{session_id}/events")
+        self._api_key = api_key
+        self._timeout = timeout
+        self._socket: ClientConnection | None = None
+
+    def __enter__(self) -> MonitorEvents:
+        self._socket = _open(self.url, self._api_key, self._timeout)
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                 trace: TracebackType | None) -> None:
+        if self._socket is not None:
+            self._socket.close()
+
+    def next(self, timeout: float | None = None) -> JsonObject:
+        """The next event (the first is the session's `status`).
+
+        Raises:
+            MonitorConnectionError: closed, or nothing arrived within the timeout.
+        """
+        if self._socket is None:
+            raise MonitorConnectionError("not connected: use `with MonitorEvents(...)`")
+        try:
+            event: JsonObject = json.loads(self._socket.recv(timeout=timeout or self._timeout))
+        except (ConnectionClosed, TimeoutError, OSError) as error:
+            raise MonitorConnectionError(f"event stream ended: {error}") from error
+        return event
+
+    def __iter__(self) -> Iterator[JsonObject]:
+        while True:
+            try:
+                yield self.next(timeout=None)
+            except MonitorConnectionError:
+                return

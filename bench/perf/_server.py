@@ -1,0 +1,56 @@
+"""Start SafeGate under uvicorn on a free loopback port for a benchmark, and stop it after."""
+
+from __future__ import annotations
+
+import os
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+
+import httpx
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        port: int = sock.getsockname()[1]
+        return port
+
+
+@contextmanager
+def running_server(extra_env: dict[str, str] | None = None) -> Iterator[str]:
+    """Yield the base URL of a one-worker SafeGate on a fresh SQLite file."""
+    port = free_port()
+    with tempfile.TemporaryDirectory(prefix="safegate-perf-") as tmp:
+        env = {
+            **os.environ,
+            "SAFEGATE_DATABASE_URL": f"sqlite:///{Path(tmp) / 'perf.db'}",
+            **(extra_env or {}),
+        }
+        process = subprocess.Popen(
+            [sys.executable, "-m", "app.cli", "serve", "--port", str(port)],
+            env=env,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+        base = f"http://127.0.0.1:{port}"
+        try:
+            deadline = time.monotonic() + 60
+            while time.monotonic() < deadline:
+                try:
+                    if httpx.get(base + "/readyz", timeout=1).status_code == 200:
+                        break
+                except httpx.HTTPError:
+                    pass
+                time.sleep(0.1)
+            else:
+                raise RuntimeError("SafeGate did not become ready in 60 s")
+            yield base
+        finally:
+            process.terminate()
+            process.wait(timeout=20)

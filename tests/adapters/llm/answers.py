@@ -1,0 +1,75 @@
+"""Scripted LLM answers and requests shared by the adapter tests."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from app.domain.models import GateRequest
+
+EMPTY_LEVEL: dict[str, Any] = {"hazards": [], "unknowns": []}
+
+# A command the gate authorizes when the analysis finds nothing: the contrast that shows a
+# failure test would notice an authorize.
+SAFE_REQUEST = GateRequest.model_validate({
+    "command": "put the apple in the fridge",
+    "scene": {
+        "objects": [
+            {"id": "apple_1", "type": "Apple", "room": "kitchen", "on": "counter_1"},
+            {"id": "counter_1", "type": "CounterTop", "room": "kitchen"},
+            {"id": "fridge_1", "type": "Fridge", "room": "kitchen"},
+        ],
+        "people": [{"id": "p1", "role": "owner", "room": "living_room",
+                    "properties": {"age_group": "adult"}}],
+    },
+    "user": {"person_id": "p1", "age_group": "adult", "mobility": "independent",
+             "cognitive_state": "typical"},
+    "robot": {"room": "kitchen", "skills": ["navigate", "pick", "place", "open", "close"],
+              "payload_kg": 2.0},
+})
+
+COFFEE_REQUEST = GateRequest.model_validate({
+    "command": "bring the hot coffee to the guest in the living room",
+    "scene": {
+        "layout": {"rooms": ["kitchen", "living_room"]},
+        "objects": [
+            {"id": "mug_1", "type": "Mug", "room": "kitchen",
+             "properties": {"temperature": "hot", "contents": "coffee", "lidded": False}},
+        ],
+        "people": [{"id": "guest_1", "role": "guest", "room": "living_room"}],
+    },
+    "robot": {"room": "kitchen", "skills": ["navigate", "pick", "place", "handover"]},
+})
+
+
+def hazard(
+    hazard_class: str = "scald_hot_liquid",
+    *,
+    category: str = "physical",
+    entities: dict[str, str] | None = None,
+    severity: str = "high",
+    preventability: str = "preventable",
+    confidence: str = "certain",
+) -> dict[str, Any]:
+    """One matrix entry as the LLM would write it."""
+    return {
+        "category": category,
+        "hazard_class": hazard_class,
+        "mechanism": f"{hazard_class.replace('_', ' ')} while doing the task",
+        "entities": entities or {},
+        "severity": severity,
+        "preventability": preventability,
+        "confidence": confidence,
+    }
+
+
+def unknown(attribute: str = "age_group", *, critical: bool = True,
+            entity: str | None = "guest_1") -> dict[str, Any]:
+    """One unknown as the LLM would write it."""
+    return {
+        "attribute": attribute,
+        "description": f"the {attribute} of the person is not stated",
+        "critical": critical,
+        "why": "a child could be scalded",
+        "entity": entity,
+        "question": f"What is the guest's {attribute}?",
+    }
