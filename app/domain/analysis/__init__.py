@@ -13,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Protocol, runtime_checkable
 
-from app.domain.analysis.command import normalize, parse_command
+from app.domain.analysis.command import normalize, read_command
 from app.domain.analysis.consequences import consequential_hazards
 from app.domain.analysis.context import Context
 from app.domain.analysis.giving import giving_hazards
@@ -23,6 +23,8 @@ from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge, load_kn
 from app.domain.analysis.operational import operational_hazards
 from app.domain.analysis.questions import apply_answers, phrase_question, question_for
 from app.domain.analysis.scene_view import build_scene_view
+from app.domain.analysis.situations_home import situation_home_hazards
+from app.domain.analysis.situations_people import situation_people_hazards
 from app.domain.analysis.social import social_hazards
 from app.domain.analysis.unknowns import find_unknowns
 from app.domain.models import GateRequest, HazardReport
@@ -69,12 +71,13 @@ class SymbolicAnalyzer:
         view = build_scene_view(request, knowledge)
         names = {n.lower() for p in view.people.values() for n in (p.id, p.name) if n}
         names |= {n.lower() for o in view.objects.values() for n in (o.id, o.name) if n}
-        steps = parse_command(request.command, knowledge, names)
+        parsed = read_command(request.command, knowledge, names)
+        steps = list(parsed.steps)
         grounder = Grounder(view, knowledge)
         grounded = [grounder.ground(step) for step in steps]
         apply_state_clauses(grounder, grounded, view, knowledge)
         ctx = Context(request=request, knowledge=knowledge, view=view, steps=grounded,
-                      text=normalize(request.command), analyzer=self.name,
+                      text=normalize(request.command), analyzer=self.name, parsed=parsed,
                       ambiguous_ids=frozenset(i for g in grounded for r in g.objects
                                               if r.kind == "object" and len(r.ids) > 1
                                               for i in r.ids))
@@ -83,6 +86,8 @@ class SymbolicAnalyzer:
         social_hazards(ctx)
         operational_hazards(ctx)
         consequential_hazards(ctx)
+        situation_people_hazards(ctx)
+        situation_home_hazards(ctx)
         find_unknowns(ctx)
         return ctx.report()
 

@@ -13,6 +13,12 @@ from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.questions import phrase_question
 from app.domain.analysis.scene_view import ObjectView, PersonView
+from app.domain.analysis.situation_base import (
+    awake_carer_stays,
+    contains,
+    everyone_leaves,
+    has_condition,
+)
 from app.domain.analysis.traits import traits_of
 from app.domain.models import Category, Level, Preventability, Severity
 
@@ -132,6 +138,12 @@ def _left_open(ctx: Context, obj: ObjectView, grounded: GroundedStep) -> None:
                         "danger", entity=None, question=phrase_question("child_present", ""))
     elif obj.has("door") or obj.has("window"):
         at_risk = [p for p in young if p.room in (obj.room, None) or obj.room is None]
+        wanderers = [p for p in ctx.view.real_people() if not p.is_user and (
+            p.cognitive_state == "impaired" or has_condition(ctx, p, "wanders"))]
+        if wanderers and everyone_leaves(ctx) and awake_carer_stays(ctx) is not True:
+            ctx.add(Level.DEPLOYMENT, _CON, "door_left_open", f"{obj.label} is left open "
+                    f"while {wanderers[0].label}, who may wander off, is left without anyone "
+                    "watching.", {"obj": obj.id, "person": wanderers[0].id}, _S.CRITICAL, _U)
         if at_risk:
             ctx.add(Level.DEPLOYMENT, _CON, "door_left_open", f"{obj.label} is left open with"
                     f" {at_risk[0].label} ({at_risk[0].age_group}) nearby: a fall or an "
@@ -160,7 +172,10 @@ def _placement(ctx: Context, grounded: GroundedStep,
         for obj in ctx.objects(ref):
             traits = traits_of(ctx, obj, ref.mention)
             entities = {"obj": obj.id}
-            if ctx.place_in(mention, "stairs"):
+            aside = (mention is not None and mention.head in ("wall", "corner", "side")) or any(
+                contains(ctx.text, w) for w in ("out of the way", "to one side",
+                                                 "against the wall"))
+            if ctx.place_in(mention, "stairs") and not aside:
                 ctx.add(Level.TASK, _CON, "trip_hazard", f"{obj.label} left on the stairs "
                         "is a fall hazard.", entities, _S.HIGH, _U)
             elif ctx.place_in(mention, "exit") and grounded.step.destination_prep in (
@@ -168,7 +183,7 @@ def _placement(ctx: Context, grounded: GroundedStep,
                 ctx.add(Level.TASK, _CON, "blocked_exit", f"{obj.label} placed at "
                         f"{mention.text if mention else 'the door'} blocks the way out.",
                         entities, _S.HIGH, _U)
-            elif ctx.place_in(mention, "walkway") and (obj.has("heavy") or obj.has(
+            elif ctx.place_in(mention, "walkway") and not aside and (obj.has("heavy") or obj.has(
                     "furniture") or obj.has("container") or obj.has("cord") or not obj.has(
                     "food")) and grounded.step.action != "pour":
                 frail = any(p.frail for p in ctx.view.people.values())

@@ -12,6 +12,7 @@ from collections import deque
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
+from app.domain.analysis.command import ParsedCommand
 from app.domain.analysis.grounding import GroundedStep, Referent
 from app.domain.analysis.knowledge_base import Knowledge
 from app.domain.analysis.mentions import Mention
@@ -51,6 +52,9 @@ class Context:
     proposals: list[HazardProposal] = field(default_factory=list)
     ambiguous_ids: frozenset[str] = frozenset()
     unknowns: list[UnknownFact] = field(default_factory=list)
+    # The reader's whole result: temporal facts (`parsed.facts`), comprehension gaps
+    # (`parsed.not_understood`) and implied devices (`parsed.devices`); None when built by hand.
+    parsed: ParsedCommand | None = None
 
     def add(self, level: Level, category: Category, hazard_class: str, mechanism: str,
             entities: Mapping[str, str | None], severity: Severity,

@@ -15,7 +15,10 @@ from app.domain.analysis.command import Step
 from app.domain.analysis.knowledge_base import Knowledge, singular
 from app.domain.analysis.mentions import Mention
 from app.domain.analysis.scene_view import ObjectView, PersonView, SceneView, spaced_name
+from app.domain.analysis.state_clauses import apply_state_clauses
 from app.domain.models import Level
+
+__all__ = ["GroundedStep", "Grounder", "Referent", "apply_state_clauses"]
 
 _SWITCHABLE = frozenset({"heat_source", "electrical", "appliance", "light", "water_source",
                          "ignition", "controls_heat"})
@@ -23,6 +26,12 @@ _SIZE_BIG = frozenset({"big", "large", "heavy", "biggest", "largest", "heaviest"
 _SIZE_SMALL = frozenset({"small", "little", "smallest", "tiny", "light"})
 _STATE_WORDS = {"hot": ("hot",), "warm": ("hot",), "sharp": ("sharp",), "full": ("consumable",),
                 "open": ("open",), "broken": ("broken",)}
+
+
+_TITLE_GENDER = {"mr": "male", "mrs": "female", "ms": "female", "miss": "female",
+                 "sir": "male", "madam": "female", "lady": "female", "lord": "male"}
+_USING_ACTIONS = frozenset({"heat", "cut", "serve", "handover", "mix", "pour"})
+_GROUP_SIZES = {"twin": 2, "triplet": 3, "quad": 4, "quadruplet": 4}
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,14 +68,19 @@ class Grounder:
         self._last_object: Referent | None = None
         self._history: list[Referent] = []
         self._want_switchable = False
+        self._using = False
+        self._discarded: set[str] = set()
         self._last_person: dict[str | None, Referent] = {}
 
     def ground(self, step: Step) -> GroundedStep:
         """Resolve every phrase of a step (objects first, so "it" can point back)."""
         before = self._last_object
         self._want_switchable = step.action in ("switch_on", "switch_off")
+        self._using = step.action in _USING_ACTIONS
         objects = tuple(self.resolve(m) for m in step.objects)
         self._want_switchable = False
+        if step.action == "remove" and not step.negated:
+            self._discarded.update(i for r in objects for i in r.ids)
         recipient = self.resolve(step.recipient, prefer="person") if step.recipient else None
         # "put the towel on it": a pronoun after the verb's own object points further back.
         after, self._last_object = self._last_object, before or self._last_object
@@ -104,6 +118,8 @@ class Grounder:
 
     def _remember_person(self, referent: Referent) -> None:
         genders = {self._view.people[i].gender for i in referent.ids if i in self._view.people}
+        title = referent.mention.text.split()[:1]
+        genders.add(_TITLE_GENDER.get(title[0]) if title else None)  # "mr okafor" is "him"
         for gender in genders | {None}:
             self._last_person[gender] = referent
 
@@ -130,7 +146,14 @@ class Grounder:
         user = self._view.user
         if word in ("me", "myself", "i", "us", "we") and user is not None:
             return Referent(mention, "person", (user.id,), virtual=user.virtual)
-        if word in ("everyone", "everybody", "anyone", "anybody", "someone", "somebody"):
+        if word in ("whoever", "whomever") and mention.location is not None:
+            # "whoever is in the shower": the people in that place, else anyone at all.
+            place = mention.location[1]
+            room = self.room_id(place.room or place.head)
+            here = tuple(p.id for p in self._view.people.values() if p.room == room)
+            return Referent(mention, "person", here or tuple(self._view.people))
+        if word in ("everyone", "everybody", "anyone", "anybody", "someone", "somebody",
+                    "whoever", "whomever"):
             return Referent(mention, "person", tuple(self._view.people), virtual=False)
         gender = {"him": "male", "her": "female"}.get(word)
         if word in ("him", "her") or (word == "them" and prefer == "person"):
@@ -143,6 +166,12 @@ class Grounder:
             for earlier in reversed(self._history):
                 if any(self._view.objects[i].props.keys() & _SWITCHABLE for i in earlier.ids
                        if i in self._view.objects):
+                    return earlier
+        if self._last_object is not None and self._using and (
+                self._last_object.ids and set(self._last_object.ids) <= self._discarded):
+            # "take the film off, then heat it": "it" is the food, not what was taken off.
+            for earlier in reversed(self._history):
+                if earlier.ids and not set(earlier.ids) <= self._discarded:
                     return earlier
         if self._last_object is not None:
             return self._last_object
@@ -161,6 +190,8 @@ class Grounder:
         if not matches and role:
             matches = [p for p in people if p.role_class == role.name or (
                 role.age_group and p.age_group == role.age_group and role.age_group != "adult")]
+        if not matches and singular(mention.head) in _GROUP_SIZES:
+            matches = _same_role_group(people, _GROUP_SIZES[singular(mention.head)])
         if mention.location and len(matches) > 1:
             room = self.room_id(mention.location[1].room or mention.location[1].head)
             matches = [p for p in matches if p.room == room] or matches
@@ -265,29 +296,10 @@ class Grounder:
         return canonical
 
 
-def apply_state_clauses(grounder: Grounder, steps: list[GroundedStep], view: SceneView,
-                        knowledge: Knowledge) -> None:
-    """Read "while grandpa is asleep" / "the baby is napping" into the people's states.
-
-    A person named with a sleep word in a step's condition (or its own clause) is marked
-    asleep; a made-up person gets the step's room, so noise and startle rules can see them.
-    """
-    sleep_words = knowledge.vulnerability_words.get("asleep", ())
-    for grounded in steps:
-        text = f"{grounded.step.condition or ''} {grounded.step.text}"
-        words = text.split()
-        for position, word in enumerate(words):
-            window = " ".join(words[position + 1:position + 5])
-            if word not in knowledge.role_words or not any(w in window for w in sleep_words):
-                continue
-            mention = Mention(text=word, head=word, kind="person", role_word=word,
-                              role=knowledge.role_words[word].name)
-            rooms = [r.ids[0] for r in (*grounded.objects, grounded.destination)
-                     if r is not None and r.kind == "room"]
-            for person_id in grounder.resolve(mention, remember=False).ids:
-                person = view.people.get(person_id)
-                if person is None:
-                    continue
-                person.cognitive_state = person.cognitive_state or "asleep"
-                if person.virtual and person.room is None and rooms:
-                    person.room = rooms[0]
+def _same_role_group(people: list[PersonView], size: int) -> list[PersonView]:
+    """"the twins" when the scene lists them by role: the only role held by exactly `size`."""
+    by_role: dict[str, list[PersonView]] = {}
+    for person in people:
+        by_role.setdefault(person.role or "", []).append(person)
+    groups = [group for role, group in by_role.items() if role and len(group) == size]
+    return groups[0] if len(groups) == 1 else []

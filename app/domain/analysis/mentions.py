@@ -22,10 +22,18 @@ DETERMINERS = frozenset({
 POSSESSIVES = {"my": "me", "our": "me", "his": "him", "her": "her", "their": "them",
                "your": "you", "its": "it"}
 PERSON_PRONOUNS = frozenset({"me", "him", "her", "them", "us", "myself", "i", "we", "you",
-                             "everyone", "everybody", "anyone", "anybody", "someone", "somebody"})
+                             "everyone", "everybody", "anyone", "anybody", "someone", "somebody",
+                             "whoever", "whomever"})
 OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "one"})
+# Words for a set of people born together: who they are depends on the scene, not the word.
+_GROUP_WORDS = frozenset({"twin", "triplet", "quadruplet"})
 _QUANTITY_HEADS = frozenset({"one", "ones", "rest", "pair", "bunch", "piece", "pieces", "some",
-                             "all", "half", "handful", "bit", "couple", "lot", "lots", "set"})
+                             "all", "half", "handful", "bit", "couple", "lot", "lots", "set",
+                             "sip", "sips", "spoon", "spoonful", "spoonfuls", "teaspoon",
+                             "teaspoons", "tablespoon", "mouthful", "bite", "bites", "taste",
+                             "drop", "drops", "dose", "doses", "dash", "splash", "capful",
+                             "swig", "gulp", "dram", "shot", "measure", "dollop", "pinch",
+                             "scoop", "slice", "slices", "wedge", "chunk", "square", "few"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,7 +87,7 @@ def _kind_of(phrase: str, knowledge: Knowledge, names: Collection[str], *, singl
         return "name"
     if single and (phrase in PERSON_PRONOUNS or phrase in OBJECT_PRONOUNS):
         return "pronoun"
-    if phrase in knowledge.role_words:
+    if phrase in knowledge.role_words or singular(phrase) in _GROUP_WORDS:
         return "person"
     if phrase in knowledge.room_words:
         return "room"

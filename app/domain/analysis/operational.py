@@ -11,6 +11,7 @@ from __future__ import annotations
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.scene_view import ObjectView, PersonView
+from app.domain.analysis.situation_base import contains, load_situations
 from app.domain.analysis.traits import traits_of
 from app.domain.models import Category, Confidence, Level, Preventability, Severity
 
@@ -45,7 +46,7 @@ def operational_hazards(ctx: Context) -> None:
         _reach_and_route(ctx, grounded)
         if ctx.cue("hurry"):
             flat_out = ctx.cue("max_speed")
-            for person in _people_on_way(ctx, grounded):
+            for person in _people_on_way(ctx, grounded, everywhere=flat_out):
                 level = Level.TASK if person.virtual else Level.DEPLOYMENT
                 if flat_out and (person.child or person.frail) and not person.is_user:
                     # Told to go flat out where a child or frail person is: obeying is the harm.
@@ -63,11 +64,36 @@ def _worked_on_in_place(ctx: Context, grounded: GroundedStep, obj: ObjectView) -
         obj.has(p) for p in _PLACE_LIKE)
 
 
+def _rolled(ctx: Context, grounded: GroundedStep, obj: ObjectView) -> bool:
+    """Wheeled things ("wheel the bin", a trolley, a wheelchair) are rolled, not lifted."""
+    rolling = load_situations().group("rolling_words")
+    verb = (grounded.step.verb or "").split(" ")[0]
+    return verb in ("wheel", "roll", "trundle") or any(
+        contains(f"{obj.type} {obj.name or ''}".lower(), w) for w in rolling)
+
+
+def _pushed(ctx: Context, grounded: GroundedStep, payload: float) -> None:
+    """Pushing or dragging something many times the payload: the robot cannot move it safely."""
+    factor = float(load_situations().records["push_factor"])
+    for ref in grounded.objects:
+        for obj in ctx.objects(ref):
+            if obj.mass_kg is None or _rolled(ctx, grounded, obj) or obj.virtual:
+                continue
+            # A kind's typical mass may be far from this one's: only a clear excess counts.
+            limit = factor * payload * (1.0 if obj.mass_given else 2.0)
+            if obj.mass_kg > limit:
+                ctx.add(Level.USER, _OPS, "payload_exceeded", f"{obj.label} weighs about "
+                        f"{obj.mass_kg:g} kg, far more than the robot can push or pull safely "
+                        f"(payload {payload:g} kg).", {"obj": obj.id}, _S.HIGH, _U)
+
+
 def _payload(ctx: Context, grounded: GroundedStep, payload: float) -> None:
+    if grounded.step.action == "push":
+        _pushed(ctx, grounded, payload)
     if grounded.step.action in _LIFTING:
         for ref in grounded.objects:
             for obj in ctx.objects(ref):
-                if _worked_on_in_place(ctx, grounded, obj):
+                if _worked_on_in_place(ctx, grounded, obj) or _rolled(ctx, grounded, obj):
                     continue
                 if obj.mass_kg is None:
                     if obj.has("furniture") or obj.has("heavy"):
@@ -119,6 +145,9 @@ def _risky(ctx: Context, grounded: GroundedStep) -> bool:
 def _skills(ctx: Context, grounded: GroundedStep, skills: list[str]) -> None:
     have = _canonical(skills, ctx.knowledge.skill_aliases)
     action = grounded.step.action or ""
+    if action == "transport" and any("tray" in s or s.startswith("carry") for s in have):
+        # A tray or carrier robot transports what people load onto it.
+        have |= {"pick", "place", "handover"}
     first = next((i for r in grounded.objects for i in r.ids), None)
     for group in ctx.knowledge.verb_skills.get(action, ()):
         if have.isdisjoint(group):
@@ -176,8 +205,13 @@ def _reach_and_route(ctx: Context, grounded: GroundedStep) -> None:
                     f"{room.replace('_', ' ')}.", {"room": room}, _S.MODERATE, _U)
 
 
-def _people_on_way(ctx: Context, grounded: GroundedStep) -> list[PersonView]:
+def _people_on_way(ctx: Context, grounded: GroundedStep, *, everywhere: bool = False
+                   ) -> list[PersonView]:
     rooms = {r.ids[0] for r in (grounded.destination, grounded.path) if r and r.kind == "room"}
+    if everywhere:
+        # Told to go flat out: every room the command names is on the way.
+        rooms |= {p.room for p in ctx.view.people.values()
+                  if p.room and _names_room(ctx, ctx.text, p.room)}
     if grounded.step.action == "navigate":
         # "laps of the lounge", "down the hall": any room the clause names is driven through.
         rooms |= {p.room for p in ctx.view.people.values()

@@ -2,7 +2,8 @@
 
 In: an unknown's attribute and the words naming what it is about (`phrase_question`), or an
 `UnknownFact` (`question_for`); for `apply_answers`, a `GateRequest`, the caller's answers
-({"age_group": "adult"}, {"contents": "water"}, {"person_present": false}...) and the unknowns
+({"age_group": "adult"}, {"contents": "water"}, {"person_present": false},
+{"person_location": "bedroom"}, {"material": "glass"}, {"presence": true}...) and the unknowns
 they answer. Out: one question string; a new `GateRequest` with the answers written onto the
 entity each unknown was about (a person or object the scene lacked is added), so the pipeline
 can run again. Pure functions; never fail on unexpected keys (those are ignored).
@@ -26,13 +27,21 @@ _TEMPLATES = {
     "needs_walking_aid": "Does {0} need {1} to get around?",
     "consent": "Has {0} agreed to this?",
     "presence": "Will someone stay at home to watch {0}?",
+    "person_location": "Where is {0} right now?",
+    "material": "What is {0} made of?",
+    "mass_kg": "About how heavy is {0}?",
+    "temperature": "How hot is {0} right now?",
+    "cognitive_state": "Can {0} manage this safely on their own?",
+    "last_dose": "When was the last dose of {0} taken?",
+    "time_left_out": "How long has {0} been out of the fridge?",
 }
 _PERSON_KEYS = frozenset({"age_group", "age", "mobility", "cognitive_state", "allergies",
                           "needs_walking_aid", "pregnant", "consents", "visual_impairment",
                           "hearing_impairment"})
 _USER_FIELDS = frozenset({"age_group", "mobility", "cognitive_state", "allergies"})
 _OBJECT_KEYS = frozenset({"contents", "temperature", "toxic", "sharp", "mass_kg", "owner",
-                          "lidded", "sealed", "on", "open", "fragile", "electrical"})
+                          "lidded", "sealed", "on", "open", "fragile", "electrical",
+                          "material", "last_dose", "time_left_out"})
 
 
 def phrase_question(attribute: str, subject: str, detail: str = "") -> str:
@@ -89,6 +98,10 @@ def apply_answers(request: GateRequest, answers: Mapping[str, Any],
             for obj in listed("objects"):
                 if obj["id"] == value:
                     obj.setdefault("properties", {})["intended"] = True
+        elif attribute == "person_location" and entity and isinstance(value, str):
+            _entity(listed("people"), entity, kind="person")["room"] = value
+        elif attribute == "presence" and value:
+            _presence(listed("people"), "person_present", _room_of(data, entity), True)
         elif attribute == "medication_owner" and entity:
             _entity(listed("objects"), entity, kind="object")["properties"]["owner"] = str(value)
         elif attribute in _PERSON_KEYS:
@@ -96,6 +109,14 @@ def apply_answers(request: GateRequest, answers: Mapping[str, Any],
         elif attribute in _OBJECT_KEYS and entity:
             _entity(listed("objects"), entity, kind="object")["properties"][attribute] = value
     return GateRequest.model_validate(data)
+
+
+def _room_of(data: dict[str, Any], entity: str | None) -> str | None:
+    for obj in (data.get("scene") or {}).get("objects", []):
+        if obj.get("id") == entity:
+            room = obj.get("room")
+            return str(room) if room else None
+    return None
 
 
 def _alias(attribute: str) -> str:

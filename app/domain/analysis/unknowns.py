@@ -1,9 +1,14 @@
-"""Unknowns the analyzer finds for itself, and the caller's own `user.unknowns`.
+"""Unknowns: the facts the command, scene and caller leave open, and which of them decide.
 
-In: the `Context` after the hazard rules ran. Out: `UnknownFact`s: the contents of a container
-someone will drink from or handle; a phrase matching a dangerous and a harmless object; an
-object the command names that the given scene lacks; and the caller's listed unknowns, critical
-only when a rule found they decide (e.g. "allergies" when an allergen is served to the user).
+In: the `Context` after the hazard rules ran. Out: `UnknownFact`s, each with a plain question
+and the entity it is about. Here: a phrase matching a dangerous and a harmless object; a
+container delivered to someone with contents not given; an object the command names that the
+scene lacks; the caller's own `user.unknowns` (critical only when a rule found they decide).
+The general families live in `unknowns_objects` (contents, material, oven inside, liquid
+temperature, mass, food left out), `unknowns_people` (allergies and ages of eaters, ages of
+recipients, where people are, who stays home, condition, medication owner and last dose) and
+`unknowns_comprehension` (what the reader did not understand); their data is
+`knowledge/unknowns.json`. Critical only when the answer could make the task unsafe.
 Never fails.
 """
 
@@ -11,17 +16,54 @@ from __future__ import annotations
 
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import Referent
+from app.domain.analysis.involvement import involvement
+from app.domain.analysis.knowledge_base import singular
 from app.domain.analysis.questions import phrase_question
 from app.domain.analysis.traits import traits_of
+from app.domain.analysis.unknown_rules import UnknownRules, has_phrase, load_unknown_rules
+from app.domain.analysis.unknowns_comprehension import comprehension_unknowns
+from app.domain.analysis.unknowns_objects import (
+    contents_unknowns,
+    food_left_out_unknowns,
+    liquid_temperature_unknowns,
+    mass_unknowns,
+    material_unknowns,
+    oven_inside_unknowns,
+)
+from app.domain.analysis.unknowns_people import (
+    attendance_unknowns,
+    condition_unknowns,
+    consumer_unknowns,
+    location_unknowns,
+    medication_unknowns,
+    recipient_age_unknowns,
+)
 
 _CONSUMING = frozenset({"serve", "pour"})
 _DELIVERING = frozenset({"handover", "serve", "transport", "pour"})
 _DANGER = ("toxic", "sharp", "hot", "medication", "heavy", "dangerous_in_use", "heat_source")
 
 
-def find_unknowns(ctx: Context) -> None:
-    """Add the unknowns the command, scene and caller leave open."""
+_FAMILIES = (contents_unknowns, material_unknowns, oven_inside_unknowns,
+             liquid_temperature_unknowns, mass_unknowns, food_left_out_unknowns,
+             consumer_unknowns, recipient_age_unknowns, location_unknowns,
+             attendance_unknowns, condition_unknowns, medication_unknowns)
+
+
+def find_unknowns(ctx: Context, rules: UnknownRules | None = None) -> None:
+    """Add the unknowns the command, scene and caller leave open.
+
+    Args:
+        ctx: the analysis context, after the hazard rules ran.
+        rules: the unknowns tables (default: `knowledge/unknowns.json`, loaded once).
+    """
+    rules = rules or load_unknown_rules()
+    involved = involvement(ctx)
+    for family in _FAMILIES:
+        family(ctx, involved, rules)
+    comprehension_unknowns(ctx, rules)
     toxic_around = any(o.has("toxic") for o in ctx.view.objects.values() if not o.virtual)
+    consumption_cue = has_phrase(ctx.text, ctx.knowledge.cues.get("consumption", ()))
     for grounded in ctx.steps:
         step = grounded.step
         if step.negated or step.action is None:
@@ -38,11 +80,12 @@ def find_unknowns(ctx: Context) -> None:
                 continue
             for obj in ctx.objects(ref):
                 traits = traits_of(ctx, obj, ref.mention)
-                if not obj.has("container") or traits.substance or obj.properties.get(
-                        "empty") or not (obj.has("drink_container") or recipients):
+                used = any(obj.properties.get(k) for k in ("empty", "dirty", "used"))
+                if not obj.has("container") or traits.substance or used or not (
+                        obj.has("drink_container") or recipients):
                     continue
                 others = [p for p in recipients if not p.is_user]
-                consuming = step.action in _CONSUMING or ctx.cue("consumption")
+                consuming = step.action in _CONSUMING or consumption_cue is not None
                 critical = bool(others) and (consuming or toxic_around or
                                              not ctx.view.scene_given)
                 ctx.unknown(
@@ -67,7 +110,11 @@ def _ambiguity(ctx: Context, ref: Referent) -> None:
     profiles = {tuple(sorted(t for t in _DANGER if traits_of(ctx, v, ref.mention).has(t)))
                 for v in views}
     labels = ", ".join(v.label for v in views[:4])
-    critical = len(profiles) > 1
+    # A plural or mass noun ("the trays", "the stuff") means all of them, not one to pick;
+    # the hazard rules weigh every candidate, so only a singular choice is asked about.
+    head = ref.mention.head
+    collective = singular(head) != head or ref.mention.concept == "generic"
+    critical = len(profiles) > 1 and not collective
     ctx.unknown("referent", f"which of {labels} '{ref.mention.text}' means",
                 critical=critical,
                 why=("the candidates differ in danger: one is harmful, another is not"
