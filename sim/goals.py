@@ -194,6 +194,25 @@ def _step_goal(state: WorldState, step: GroundedStep, user: str | None) -> list[
     return []
 
 
+def _heat_left_off(
+    state: WorldState, per_step: list[list[Conjunction]], heaters: tuple[str, ...]
+) -> Conjunction:
+    """Leave no heat source on that was off at the start, unless the command asks for it on.
+
+    A task is done when its result is there and nothing it started is left running: a burner
+    lit to heat soup is switched off again once the soup is hot.
+    """
+    wanted_on = {lit.args for options in per_step for conj in options for lit in conj
+                 if lit.symbol == "is_on" and lit.value}
+    return tuple(
+        GoalLiteral("is_on", (obj,), False)
+        for obj in heaters
+        if (obj,) not in wanted_on
+        and state.value("heat_source", (obj,)) is True
+        and state.value("is_on", (obj,)) is False
+    )
+
+
 def goal_for(request: GateRequest, state: WorldState) -> Goal:
     """The goal the command asks for, in the given state.
 
@@ -230,7 +249,8 @@ def goal_for(request: GateRequest, state: WorldState) -> Goal:
             liquid = step.instrument.mention.substance
     if not per_step:
         raise GoalError(f"no goal understood in {request.command!r}")
-    alternatives = [tuple(dict.fromkeys(lit for part in combo for lit in part))
+    restore = _heat_left_off(state, per_step, tuple(dict.fromkeys(heaters)))
+    alternatives = [tuple(dict.fromkeys([*(lit for part in combo for lit in part), *restore]))
                     for combo in itertools.islice(itertools.product(*per_step),
                                                   MAX_ALTERNATIVES)]
     entities = frozenset(a for alt in alternatives for lit in alt for a in lit.args
