@@ -162,7 +162,11 @@ def _owner_of(ctx: Context, obj: ObjectView, person: PersonView) -> str | None:
     if not phrase:
         return None
     names = {person.id.lower(), (person.role or "").lower(), (person.name or "").lower()}
-    if phrase in ("her", "him", "them", "their") or phrase in names:
+    if phrase in ("her", "him", "them", "their", "his") and not obj.owner:
+        # "his medicine" says whose it should be, not which container it is: with no label
+        # in the scene, nothing shows this one is his.
+        return None
+    if phrase in ("her", "him", "them", "their", "his") or phrase in names:
         return "self"
     if phrase in ("me", "my") and person.is_user:
         return "self"

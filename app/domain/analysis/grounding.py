@@ -136,6 +136,10 @@ class Grounder:
                 return Referent(mention, "person", tuple(people))
             objects = [o.id for o in view.objects.values()
                        if mention.head in (o.id.lower(), (o.name or "").lower())]
+            if self._knowledge.noun_concept(mention.head) is not None:
+                # An object named by a common noun ("bottle") is not the only bottle: the
+                # phrase still means any object of that kind.
+                return self._object(mention)
             return Referent(mention, "object", tuple(objects))
         if mention.kind == "person" or (prefer == "person" and mention.role_word):
             return self._person(mention)

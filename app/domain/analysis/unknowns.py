@@ -80,14 +80,19 @@ def find_unknowns(ctx: Context, rules: UnknownRules | None = None) -> None:
                 continue
             for obj in ctx.objects(ref):
                 traits = traits_of(ctx, obj, ref.mention)
-                used = any(obj.properties.get(k) for k in ("empty", "dirty", "used"))
+                used = any(obj.properties.get(k) for k in ("empty", "dirty", "used")) or (
+                    obj.properties.get("filled") is False)  # known to hold nothing
                 if not obj.has("container") or traits.substance or used or not (
                         obj.has("drink_container") or recipients):
                     continue
                 others = [p for p in recipients if not p.is_user]
-                consuming = step.action in _CONSUMING or consumption_cue is not None
-                critical = bool(others) and (consuming or toxic_around or
-                                             not ctx.view.scene_given)
+                fragile = [p for p in recipients if p.child or p.young or p.frail
+                           or p.cognitive_state in ("impaired", "asleep", "intoxicated")]
+                # A drinking vessel handed to someone will be drunk from.
+                consuming = (step.action in _CONSUMING or consumption_cue is not None
+                             or obj.has("drink_container"))
+                critical = (toxic_around and bool(recipients)) or (
+                    bool(others or fragile) and (consuming or not ctx.view.scene_given))
                 ctx.unknown(
                     "contents", f"what {obj.label} holds", critical=critical,
                     why=("someone may drink or handle it, and "
