@@ -14,7 +14,8 @@ own retries are switched off.
 Structured output is asked for in one of two dialects: OpenAI's
 `{"type": "json_schema", "json_schema": {...}}`, or `{"type": "json_object", "schema": S}`,
 which llama.cpp-style servers understand. In `auto` mode the client starts with the first and,
-if the server rejects the request as malformed (HTTP 400/422), switches to the second for good.
+if the server rejects the request as malformed (HTTP 400/422, or any error naming
+`response_format`, as llama-cpp-python's 500 does), switches to the second for good.
 """
 
 from __future__ import annotations
@@ -225,6 +226,11 @@ def _translate(litellm: Any, error: Exception, config: LlmConfig) -> LlmError:
     if isinstance(error, litellm.BadRequestError | litellm.UnprocessableEntityError):
         return _SchemaDialectRejected(
             LlmRequestRejected(f"{who} rejected the request ({detail})")
+        )
+    if "response_format" in str(error):
+        # llama-cpp-python's server answers an unknown response_format with a 500 naming it.
+        return _SchemaDialectRejected(
+            LlmRequestRejected(f"{who} rejected the response format ({detail})")
         )
     if isinstance(error, litellm.AuthenticationError | litellm.NotFoundError):
         return LlmRequestRejected(f"{who} rejected the request ({detail})")

@@ -29,6 +29,7 @@ class Scripted:
     delay: float = 0.0
     finish_reason: str = "stop"
     reject_json_schema: bool = False
+    rejection_status: int = 400
 
 
 @dataclass
@@ -104,8 +105,9 @@ def _handler(server_state: ScriptedServer) -> type[BaseHTTPRequestHandler]:
             if reply.reject_json_schema and response_format.get("type") == "json_schema":
                 # The reply stays queued for the retry in the other dialect.
                 server_state.script.appendleft(reply)
-                self._send(400, {"error": {"message": "json_schema is not supported",
-                                           "type": "invalid_request_error"}})
+                self._send(reply.rejection_status, {"error": {
+                    "message": "response_format.type: Input should be 'text' or 'json_object'",
+                    "type": "invalid_request_error"}})
                 return
             if reply.status != 200:
                 self._send(reply.status, {"error": {"message": f"scripted {reply.status}",

@@ -121,6 +121,7 @@ FAILURES: dict[str, list[Scripted]] = {
 }
 
 
+@pytest.mark.faults
 class TestFailingClosed:
     def test_a_clean_empty_analysis_authorizes_so_the_failure_tests_can_fail(
         self, llm_server: ScriptedServer, make_client: ClientFactory

@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
+import pytest
+
 from app.adapters.llm import LitellmClient, LlmAnalyzer, PromptSet, request_hash
 from app.adapters.llm.prompting import PROMPTS_DIR
 from app.domain.ensemble import ANALYSIS_UNAVAILABLE
@@ -51,6 +53,7 @@ class TestAnalysisCache:
                     prompts=PromptSet(root=tmp_path)).analyze(COFFEE_REQUEST)
         assert len(llm_server.requests) == 6
 
+    @pytest.mark.faults
     def test_a_failed_analysis_is_not_cached(
         self, repository: Repository, llm_server: ScriptedServer, make_client: ClientFactory
     ) -> None:

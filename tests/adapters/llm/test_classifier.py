@@ -40,6 +40,7 @@ class TestLlmClassifier:
          [Scripted(content='{"decision": "authorize", "reason": "x"}', delay=2.5)]],
         ids=["invalid decision", "truncated", "HTTP 500", "HTTP 429", "timeout"],
     )
+    @pytest.mark.faults
     def test_every_failure_is_a_deferral(
         self, llm_server: ScriptedServer, make_client: ClientFactory, failure: list[Scripted]
     ) -> None:

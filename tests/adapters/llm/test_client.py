@@ -45,6 +45,16 @@ class TestLitellmClient:
         assert llm_server.requests[1]["response_format"]["schema"] == SCHEMA
         assert client.response_format == "json_object"
 
+    def test_falls_back_when_the_server_names_the_format_in_a_500(
+        self, llm_server: ScriptedServer, make_client: Callable[..., LitellmClient]
+    ) -> None:
+        # What llama-cpp-python's server does with a json_schema response_format.
+        llm_server.queue(Scripted(content='{"a": 4}', reject_json_schema=True,
+                                  rejection_status=500))
+        client = make_client()
+        assert client.complete(MESSAGES, schema_name="Probe", schema=SCHEMA).text == '{"a": 4}'
+        assert client.response_format == "json_object"
+
     def test_a_fixed_dialect_does_not_fall_back(
         self, llm_server: ScriptedServer, make_client: Callable[..., LitellmClient]
     ) -> None:

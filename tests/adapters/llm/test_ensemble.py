@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+import pytest
+
 from app.adapters.llm import LitellmClient, LlmAnalyzer
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.binding import TemplateIndex
@@ -62,6 +64,7 @@ class TestEnsembleAnalyzer:
         assert report.unknowns == (LOOSE_END,)
         assert report.analyzer == "ensemble(a+b)"
 
+    @pytest.mark.faults
     def test_a_failing_member_adds_the_critical_unknown(self) -> None:
         first = FixedAnalyzer("a", HazardReport(proposals=(SHARED,)))
         report = EnsembleAnalyzer([first, BrokenAnalyzer()]).analyze(GateRequest(command="x"))
@@ -100,6 +103,7 @@ class TestSymbolicPlusLlm:
         report = ensemble.analyze(SAFE_REQUEST)
         assert "startling" in {p.hazard_class for p in report.proposals}
 
+    @pytest.mark.faults
     def test_an_llm_failure_defers_what_symbolic_alone_authorizes(
         self, llm_server: ScriptedServer, make_client: Callable[..., LitellmClient]
     ) -> None:

@@ -44,6 +44,7 @@ class TestLlmPlanner:
                          analyzer=SymbolicAnalyzer())
         assert gated.decision.decision is Decision.AUTHORIZE and gated.contract is not None
         constraints = planner_constraints(gated.contract)
+        assert constraints
         llm_server.answer_json(GOOD_PLAN)
         LlmPlanner(make_client()).plan(SAFE_REQUEST, gated.contract)
         prompt = llm_server.requests[0]["messages"][-1]["content"]
