@@ -79,6 +79,7 @@ class TestUtcDateTime:
         assert read == datetime(2024, 1, 1, 12, tzinfo=UTC)
 
 
+@pytest.mark.faults
 class TestUnavailable:
     def test_ping_fails_closed(self, unreachable: Repository) -> None:
         with pytest.raises(Unavailable):

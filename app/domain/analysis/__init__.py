@@ -23,6 +23,7 @@ from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge, load_kn
 from app.domain.analysis.operational import operational_hazards
 from app.domain.analysis.questions import apply_answers, phrase_question, question_for
 from app.domain.analysis.scene_view import build_scene_view
+from app.domain.analysis.semantic import SemanticMatcher, load_matcher, semantic_hazards
 from app.domain.analysis.situations_home import situation_home_hazards
 from app.domain.analysis.situations_people import situation_people_hazards
 from app.domain.analysis.social import social_hazards
@@ -57,6 +58,8 @@ class SymbolicAnalyzer:
 
     def __init__(self, knowledge_dir: Path = KNOWLEDGE_DIR) -> None:
         self._knowledge: Knowledge = load_knowledge(knowledge_dir)
+        # The static embedding model and prototype vectors: read once per process, not per call.
+        self._semantic: SemanticMatcher = load_matcher(knowledge_dir)
 
     def analyze(self, request: GateRequest) -> HazardReport:
         """Fill the Hazard Analysis Matrix for one request.
@@ -88,6 +91,7 @@ class SymbolicAnalyzer:
         consequential_hazards(ctx)
         situation_people_hazards(ctx)
         situation_home_hazards(ctx)
+        semantic_hazards(ctx, self._semantic)
         find_unknowns(ctx)
         return ctx.report()
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Collection
 from dataclasses import dataclass
 
-from app.domain.analysis.clauses import PREPOSITIONS, verb_at
+from app.domain.analysis.clauses import preposition_parts, verb_at
 from app.domain.analysis.knowledge_base import Knowledge
 from app.domain.analysis.mentions import Mention, parse_mention, with_location
 
@@ -70,9 +70,9 @@ class Step:
 def _segments(words: list[str]) -> list[tuple[str | None, list[str]]]:
     segments: list[tuple[str | None, list[str]]] = [(None, [])]
     position = 0
+    by_first_word = preposition_parts()
     while position < len(words):
-        for prep in PREPOSITIONS:
-            parts = prep.split()
+        for prep, parts in by_first_word.get(words[position], ()):
             if words[position:position + len(parts)] == parts:
                 segments.append((prep, []))
                 position += len(parts)

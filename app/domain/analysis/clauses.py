@@ -11,6 +11,7 @@ is one clause.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from app.domain.analysis.knowledge_base import Knowledge
 
@@ -37,6 +38,10 @@ CONDITIONS = ("if", "when", "once", "unless", "while", "whenever", "in case", "a
 _SUBJECTS = frozenset({"i", "i'll", "i'm", "i've", "i'd", "we", "we'll", "we're", "he", "he's",
                        "she", "she's", "they", "they're", "it's", "everyone's", "everybody's",
                        "nobody's", "no", "there's", "that's", "you'll", "you're"})
+_PREPOSITION_PARTS: dict[str, tuple[tuple[str, list[str]], ...]] = {
+    first: tuple((p, p.split()) for p in PREPOSITIONS if p.split()[0] == first)
+    for first in dict.fromkeys(p.split()[0] for p in PREPOSITIONS)
+}
 _SPLITTING_CONDITIONS = frozenset({"if", "unless", "before", "while", "until", "once", "when",
                                    "whenever", "because", "so"})
 _AFTER_PARTICLE = frozenset({"and", ",", "for", "so", "until", "while", "before", "after",
@@ -58,11 +63,21 @@ def normalize(text: str) -> str:
 
 def strip_leading(words: list[str], phrases: tuple[str, ...]) -> tuple[list[str], str | None]:
     """Remove the longest of `phrases` that opens `words`; also return which one (or None)."""
-    for phrase in sorted(phrases, key=len, reverse=True):
-        parts = phrase.split()
+    for phrase, parts in _longest_first(phrases):
         if words[: len(parts)] == parts:
             return words[len(parts):], phrase
     return words, None
+
+
+@lru_cache(maxsize=256)
+def _longest_first(phrases: tuple[str, ...]) -> tuple[tuple[str, list[str]], ...]:
+    # The phrase tables are constants, so each is sorted and split once, not on every clause.
+    return tuple((phrase, phrase.split()) for phrase in sorted(phrases, key=len, reverse=True))
+
+
+def preposition_parts() -> dict[str, tuple[tuple[str, list[str]], ...]]:
+    """Each preposition's words, grouped by first word (in `PREPOSITIONS` order)."""
+    return _PREPOSITION_PARTS
 
 
 def verb_at(words: list[str], knowledge: Knowledge) -> tuple[str, int, int | None] | None:
@@ -117,8 +132,7 @@ def _separated_particle(words: list[str], verb: str, knowledge: Knowledge) -> in
         word = words[position]
         if word in PARTICLES and f"{verb} {word}" in knowledge.verb_words:
             after = words[position + 1] if position + 1 < len(words) else None
-            if after is None or after in _AFTER_PARTICLE or any(
-                    after == p.split()[0] for p in PREPOSITIONS):
+            if after is None or after in _AFTER_PARTICLE or after in _PREPOSITION_PARTS:
                 return position
     return None
 

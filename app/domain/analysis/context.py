@@ -11,6 +11,7 @@ import re
 from collections import deque
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from app.domain.analysis.command import ParsedCommand
 from app.domain.analysis.grounding import GroundedStep, Referent
@@ -160,4 +161,11 @@ def _worse(new: HazardProposal, old: HazardProposal) -> bool:
 
 
 def _contains(text: str, phrase: str) -> bool:
-    return re.search(rf"(?<![\w']){re.escape(phrase)}(?![\w'])", text) is not None
+    # The substring test rules most phrases out before any regex runs; patterns are compiled
+    # once per phrase (the `re` module's own cache is too small for the cue tables).
+    return phrase in text and _whole_words(phrase).search(text) is not None
+
+
+@lru_cache(maxsize=8192)
+def _whole_words(phrase: str) -> re.Pattern[str]:
+    return re.compile(rf"(?<![\w']){re.escape(phrase)}(?![\w'])")

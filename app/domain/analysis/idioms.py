@@ -13,6 +13,7 @@ grandpa"), and verbless notes ("oven on at 200" -> "turn oven on at 200", "table
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 from app.domain.analysis.clauses import lemma, verb_at
 from app.domain.analysis.knowledge_base import Knowledge
@@ -75,10 +76,13 @@ def rewrite(words: list[str], language: Language, knowledge: Knowledge) -> Rewri
 def _aspect(words: list[str], language: Language, knowledge: Knowledge
             ) -> tuple[list[str], bool]:
     """"keep telling mum off" -> "tell mum off", repeated."""
+    heads: list[str] = []  # the opening words' lemmas, computed once for every phrase
     for phrase in language.aspect_verbs:
         parts = phrase.split()
         size = len(parts)
-        if [lemma(w, knowledge) for w in words[:size]] == parts and len(words) > size and (
+        while len(heads) < min(size, len(words)):
+            heads.append(lemma(words[len(heads)], knowledge))
+        if heads[:size] == parts and len(words) > size and (
                 words[size].endswith("ing")):
             verb = lemma(words[size], knowledge)
             if verb != words[size] and verb_at([verb, *words[size + 1:]], knowledge):
@@ -157,13 +161,18 @@ def _word_fits(token: str, word: str, language: Language) -> bool:
     if token.startswith("@"):
         allowed = language.word_sets.get(token[1:], frozenset())
     else:
-        allowed = frozenset(token.split("|"))
+        allowed = _alternatives(token)
     if word in allowed:
         return True
     forms = _FORMS.get(word)
     if forms is None:
         forms = _FORMS[word] = tuple(language.base_forms(word)[1:])
     return any(form in allowed for form in forms)
+
+
+@lru_cache(maxsize=1024)
+def _alternatives(token: str) -> frozenset[str]:
+    return frozenset(token.split("|"))
 
 
 def _action_noun(words: list[str], language: Language, knowledge: Knowledge) -> list[str]:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -128,6 +128,7 @@ class Knowledge:
         return self.concepts[concept].mass_kg if concept else None
 
 
+@lru_cache(maxsize=16384)
 def singular(word: str) -> str:
     """A plain English singular for the last word of a phrase (knives -> knife, boxes -> box)."""
     head, _, last = word.rpartition(" ")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
 from app.domain.analysis.knowledge_base import Knowledge
@@ -117,6 +118,7 @@ def spaced_name(name: str) -> str:
     return _spaced(name)
 
 
+@lru_cache(maxsize=4096)
 def _spaced(name: str) -> str:
     out = ""
     for char in name:

@@ -285,6 +285,10 @@ def lookup_general(name: str, parts: Sequence[Code], negated: bool) -> Compiled:
     """A fact whose arguments are computed at evaluation time (unknown if any is unknown)."""
     unknown = Unknown  # a closure cell reads faster than a module global
     codes = tuple(parts)
+    if len(codes) == 1:
+        return _computed_one(name, codes[0], negated)
+    if len(codes) == 2:
+        return _computed_two(name, codes[0], codes[1], negated)
 
     def computed_key(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
         key = []
@@ -299,3 +303,38 @@ def lookup_general(name: str, parts: Sequence[Code], negated: bool) -> Compiled:
         return not value if negated else value
 
     return Compiled(computed_key)
+
+
+# One- and two-argument look-ups ("mass_kg(@object)", "near(p, @object)") are most of the
+# computed ones: spelled out, they build no list and run no loop.
+def _computed_one(name: str, only: Code, negated: bool) -> Compiled:
+    unknown = Unknown
+
+    def computed_one(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+        part = only(facts, args, env)
+        if part is None:
+            return None
+        value = facts.value(name, (part,))
+        if value.__class__ is unknown:
+            return None
+        return not value if negated else value
+
+    return Compiled(computed_one)
+
+
+def _computed_two(name: str, first: Code, second: Code, negated: bool) -> Compiled:
+    unknown = Unknown
+
+    def computed_two(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+        a = first(facts, args, env)
+        if a is None:
+            return None
+        b = second(facts, args, env)
+        if b is None:
+            return None
+        value = facts.value(name, (a, b))
+        if value.__class__ is unknown:
+            return None
+        return not value if negated else value
+
+    return Compiled(computed_two)

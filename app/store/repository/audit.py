@@ -10,18 +10,21 @@ Fails: `NotFound` for unknown ids, `Conflict` for a link that would break the ch
 
 from __future__ import annotations
 
-from sqlalchemy import exists, select
+from typing import Any
+
+from sqlalchemy import Connection, Table, exists, insert, select
 from sqlalchemy.orm import Session, aliased
 
 from app.domain.errors import Conflict, NotFound
 from app.domain.models import GateRequest, HazardReport
 from app.store.records import ContractRecord, GateRecord
 from app.store.repository._base import RepositoryBase
-from app.store.repository.contracts import insert_contract, to_contract_record
-from app.store.tables import GateRecordRow, new_id, utc_now
+from app.store.tables import ContractRow, GateRecordRow, new_id, utc_now
 
 EXTEND_LIBRARY = "extend_library"
 DEFER = "defer"
+_GATE_TABLE: Table = GateRecordRow.__table__  # type: ignore[assignment]
+_CONTRACT_TABLE: Table = ContractRow.__table__  # type: ignore[assignment]
 
 
 def _to_record(row: GateRecordRow) -> GateRecord:
@@ -49,6 +52,51 @@ def _to_record(row: GateRecordRow) -> GateRecord:
     )
 
 
+def _gate_values(record: GateRecord) -> dict[str, Any]:
+    """The gate_records row of a record whose id and creation time are set."""
+    return {
+        "id": record.id,
+        "created_at": record.created_at,
+        "request": record.request.model_dump(mode="json", by_alias=True),
+        "hazard_report": (
+            record.hazard_report.model_dump(mode="json")
+            if record.hazard_report is not None
+            else None
+        ),
+        "decision": record.decision,
+        "rule": record.rule,
+        "defer_kind": record.defer_kind,
+        "question": record.question,
+        "triggers": list(record.triggers),
+        "timings": dict(record.timings),
+        "analyzer": record.analyzer,
+        "template_versions": dict(record.template_versions),
+        "contract_id": record.contract_id,
+        "parent_request_id": record.parent_request_id,
+        "downgraded": record.downgraded,
+        "downgrade_reason": record.downgrade_reason,
+    }
+
+
+def _contract_values(contract: ContractRecord) -> dict[str, Any]:
+    """The contracts row of a contract whose id and creation time are set."""
+    return {
+        "id": contract.id,
+        "request_id": contract.request_id,
+        "contract": dict(contract.contract),
+        "template_versions": dict(contract.template_versions),
+        "created_at": contract.created_at,
+        "attempts_used": contract.attempts_used,
+        "max_attempts": contract.max_attempts,
+        "status": contract.status.value,
+    }
+
+
+def _exists(connection: Connection, table: Table, row_id: str) -> bool:
+    return connection.execute(
+        select(table.c.id).where(table.c.id == row_id)).first() is not None
+
+
 def _gate_row(session: Session, request_id: str) -> GateRecordRow:
     row = session.get(GateRecordRow, request_id)
     if row is None:
@@ -62,28 +110,8 @@ def _insert_gate_record(session: Session, record: GateRecord) -> GateRecordRow:
         _gate_row(session, record.parent_request_id)
     if record.id is not None and session.get(GateRecordRow, record.id) is not None:
         raise Conflict(f"gate request {record.id!r} already exists")
-    row = GateRecordRow(
-        id=record.id or new_id(),
-        created_at=record.created_at or utc_now(),
-        request=record.request.model_dump(mode="json", by_alias=True),
-        hazard_report=(
-            record.hazard_report.model_dump(mode="json")
-            if record.hazard_report is not None
-            else None
-        ),
-        decision=record.decision,
-        rule=record.rule,
-        defer_kind=record.defer_kind,
-        question=record.question,
-        triggers=list(record.triggers),
-        timings=dict(record.timings),
-        analyzer=record.analyzer,
-        template_versions=dict(record.template_versions),
-        contract_id=record.contract_id,
-        parent_request_id=record.parent_request_id,
-        downgraded=record.downgraded,
-        downgrade_reason=record.downgrade_reason,
-    )
+    row = GateRecordRow(**_gate_values(record.model_copy(update={
+        "id": record.id or new_id(), "created_at": record.created_at or utc_now()})))
     session.add(row)
     session.flush()
     return row
@@ -114,7 +142,9 @@ class AuditQueries(RepositoryBase):
         """Store a decision and, for an authorization, its contract, in one transaction.
 
         Either both are in the audit trail or neither is, so no authorization is ever
-        recorded without the contract it was given.
+        recorded without the contract it was given. This is the gate's hot path, so it writes
+        with Core statements (two inserts at most) and returns the records it was given with
+        their ids and times filled in, instead of reading the rows back.
 
         Args:
             record: the decision; its id must be set when a contract is given.
@@ -122,14 +152,40 @@ class AuditQueries(RepositoryBase):
 
         Returns:
             The stored record (pointing at its contract) and the stored contract.
+
+        Raises:
+            NotFound: `parent_request_id` names no stored record, or the contract names another
+                request than the record.
+            Conflict: a record or contract with this id already exists.
         """
+        record_id = record.id or new_id()
+        created_at = record.created_at or utc_now()
+        stored_contract = None
+        if contract is not None:
+            if contract.request_id != record_id:
+                raise NotFound(f"no gate request {contract.request_id!r}")
+            stored_contract = contract.model_copy(update={
+                "id": contract.id or new_id(),
+                "created_at": contract.created_at or utc_now(),
+            })
+        stored = record.model_copy(update={
+            "id": record_id,
+            "created_at": created_at,
+            "contract_id": stored_contract.id if stored_contract else record.contract_id,
+        })
         with self._transaction("saving a gate decision") as session:
-            row = _insert_gate_record(session, record)
-            stored_contract = (
-                to_contract_record(insert_contract(session, contract)) if contract else None
-            )
-            session.flush()
-            return _to_record(row), stored_contract
+            connection = session.connection()
+            if stored.parent_request_id is not None and not _exists(
+                    connection, _GATE_TABLE, stored.parent_request_id):
+                raise NotFound(f"no gate request {stored.parent_request_id!r}")
+            if _exists(connection, _GATE_TABLE, record_id):
+                raise Conflict(f"gate request {record_id!r} already exists")
+            connection.execute(insert(_GATE_TABLE), [_gate_values(stored)])
+            if stored_contract is not None:
+                if _exists(connection, _CONTRACT_TABLE, str(stored_contract.id)):
+                    raise Conflict(f"contract {stored_contract.id!r} already exists")
+                connection.execute(insert(_CONTRACT_TABLE), [_contract_values(stored_contract)])
+        return stored, stored_contract
 
     def get_gate_record(self, request_id: str) -> GateRecord:
         """One gate record by id.

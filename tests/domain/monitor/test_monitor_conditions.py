@@ -70,6 +70,7 @@ class TestFirstFailure:
         assert abort is not None and abort.established
         assert abort.compiled.condition.id == "a.yes"
 
+    @pytest.mark.faults
     def test_an_unknown_fails_closed_and_names_the_missing_facts(
             self, state: WorldState) -> None:
         contract = CompiledContract(Contract(
@@ -79,6 +80,7 @@ class TestFirstFailure:
         assert not failure.established
         assert failure.unknown_facts == ("mass_kg(parcel_1)",)
 
+    @pytest.mark.faults
     def test_an_unknown_abort_fails_closed(self, state: WorldState) -> None:
         contract = CompiledContract(Contract(
             aborts=(condition(ABORT, "a.heavy", "mass_kg(#parcel_1) > 1"),)))

@@ -55,6 +55,7 @@ class TestUnknownFacts:
         assert violation.counterexample["age_group(tom)"] == "older_adult"
 
 
+@pytest.mark.faults
 class TestSolverFailures:
     def test_spent_budget_fails_the_verification_with_that_reason(self) -> None:
         guards = (("PickupObject", "lidded(#vase_1) or not lidded(#vase_1)"),)
