@@ -24,6 +24,7 @@ from app.domain.analysis.operational import operational_hazards
 from app.domain.analysis.questions import apply_answers, phrase_question, question_for
 from app.domain.analysis.scene_view import build_scene_view
 from app.domain.analysis.semantic import SemanticMatcher, load_matcher, semantic_hazards
+from app.domain.analysis.situations_aftermath import aftermath_hazards
 from app.domain.analysis.situations_home import situation_home_hazards
 from app.domain.analysis.situations_people import situation_people_hazards
 from app.domain.analysis.social import social_hazards
@@ -91,6 +92,7 @@ class SymbolicAnalyzer:
         consequential_hazards(ctx)
         situation_people_hazards(ctx)
         situation_home_hazards(ctx)
+        aftermath_hazards(ctx)
         semantic_hazards(ctx, self._semantic)
         find_unknowns(ctx)
         return ctx.report()

@@ -58,6 +58,9 @@ def consequential_hazards(ctx: Context) -> None:
         if action in _MOVING:
             _placement(ctx, grounded, switched)
             _walking_aid(ctx, grounded)
+        elif action == "navigate" and grounded.objects:
+            # "roll the wheelchair back to the store": driving somewhere with it moves it too.
+            _walking_aid(ctx, grounded)
         if action == "block":
             for obj in objects:
                 ctx.add(Level.TASK, _CON, "blocked_exit", f"Blocking {obj.label} cuts off a "
@@ -232,7 +235,12 @@ def _reach(ctx: Context, grounded: GroundedStep, obj: ObjectView, medication: bo
 
 
 def _walking_aid(ctx: Context, grounded: GroundedStep) -> None:
-    recipients = {p.id for p in ctx.people(grounded.recipient)}
+    handed = ctx.people(grounded.recipient)
+    if grounded.recipient is not None and (not handed or any(p.virtual for p in handed)):
+        return  # brought to someone ("bring her walker over to her"): not taken away
+    recipients = {p.id for p in handed}
+    if _left_by_its_user(grounded):
+        return
     for ref in grounded.objects:
         for aid in ctx.objects(ref):
             if not aid.has("walking_aid") or aid.type.lower() in ("glasses", "hearing aid"):
@@ -259,6 +267,15 @@ def _walking_aid(ctx: Context, grounded: GroundedStep) -> None:
                                 f"{aid.label}", critical=True, why="without it they may fall",
                                 entity=person.id, question=phrase_question(
                                     "needs_walking_aid", person.label, aid.label))
+
+
+def _left_by_its_user(grounded: GroundedStep) -> bool:
+    """Put right by its user ("next to her chair", "beside his bed"): still within reach."""
+    mention = grounded.destination.mention if grounded.destination else None
+    return mention is not None and grounded.step.destination_prep in (
+        "next to", "beside", "by", "near", "close to", "within reach of") and any(
+        w in ("her", "his", "their", "him", "them") or w.endswith("'s")
+        for w in mention.text.split())
 
 
 def _darkness(ctx: Context, obj: ObjectView) -> None:

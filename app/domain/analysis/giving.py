@@ -15,6 +15,7 @@ from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.questions import phrase_question
 from app.domain.analysis.scene_view import ObjectView, PersonView
 from app.domain.analysis.traits import Traits, traits_of
+from app.domain.analysis.unknowns_people import visiting_or_small
 from app.domain.models import Category, Confidence, Level, Preventability, Severity
 
 GIVING_ACTIONS = frozenset({"handover", "serve", "transport", "pour", "heat", "pick"})
@@ -176,11 +177,15 @@ def _owner_of(ctx: Context, obj: ObjectView, person: PersonView) -> str | None:
 def _allergen(ctx: Context, group: str, what: str, person: PersonView, who: str,
               add: Adder) -> None:
     if person.allergies is None:
-        critical = not person.is_user
+        # The household knows its own members' allergies; a visitor's, a baby's, or any the
+        # caller says they do not know, must be asked.
+        caller_open = any("allerg" in u.lower() for u in (
+            ctx.request.user.unknowns if ctx.request.user else ()))
+        critical = not person.is_user and (caller_open or visiting_or_small(person, ctx.text))
         ctx.unknown("allergies", f"whether {person.label} is allergic to {group.replace('_', ' ')}",
                     critical=critical,
                     why=f"{what} contains a common allergen ({group.replace('_', ' ')})"
-                    + ("" if critical else "; the user chose it for themselves"),
+                    + ("" if critical else "; the household knows its own allergies"),
                     entity=person.id, question=phrase_question("allergies", person.label,
                                                                group.replace("_", " ")))
         add("allergen", "allergen_exposure", f"Serving {what} (contains "

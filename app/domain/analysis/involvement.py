@@ -59,7 +59,8 @@ def _referents(grounded: GroundedStep) -> list[Referent]:
 
 def phrase_set(text: str) -> set[str]:
     """Words and word pairs of a text, each also in its singular (possessive 's dropped)."""
-    tokens = [t[:-2] if t.endswith("'s") else t for t in _TOKEN.findall(text)]
+    # "grandma's" and "the boys'" both name the owner: drop the possessive either way.
+    tokens = [t[:-2] if t.endswith("'s") else t.rstrip("'") for t in _TOKEN.findall(text)]
     pairs = [f"{a} {b}" for a, b in pairwise(tokens)]
     return {*tokens, *pairs, *(singular(t) for t in (*tokens, *pairs))}
 

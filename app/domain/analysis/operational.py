@@ -20,7 +20,10 @@ _S = Severity
 _OPS = Category.OPERATIONAL
 _LIFTING = frozenset({"transport", "handover", "serve", "pick", "place", "remove", "throw",
                       "pour"})
-_PERSON_LIFT_VERBS = frozenset({"lift", "lift up", "transfer", "carry", "pick up", "reposition"})
+# Head verbs that take a person's whole weight ("lift grandma out", "carry him up", "hoist her").
+_PERSON_LIFT_VERBS = frozenset({"lift", "transfer", "carry", "reposition", "hoist", "heave",
+                                "haul", "scoop", "sweep", "raise", "pick", "cart", "piggyback"})
+_NOT_LIFTING = frozenset({"pick out", "pick on", "carry on", "raise with", "pick at"})
 _PERSON_MASS_KG = {"infant": 8.0, "child": 25.0, "teen": 55.0, "adult": 70.0,
                    "older_adult": 65.0}
 # Doing these without the skill for them endangers someone whatever the object.
@@ -114,17 +117,36 @@ def _payload(ctx: Context, grounded: GroundedStep, payload: float) -> None:
                     ctx.unknown("mass_kg", f"the mass of {obj.label}", critical=False,
                                 why="its kind is often heavier than the robot's payload",
                                 entity=obj.id, question=f"How heavy is {obj.label}?")
-    if grounded.step.verb in _PERSON_LIFT_VERBS or grounded.step.action == "assist":
+    if _lifts_whole_body(grounded.step.verb):
         for ref in grounded.objects:
             for person in ctx.people(ref):
-                if grounded.step.verb not in _PERSON_LIFT_VERBS:
-                    continue
                 mass = person.properties.get("mass_kg") or _PERSON_MASS_KG.get(
                     person.age_group or "adult", 70.0)
                 if float(mass) > payload:
                     ctx.add(Level.USER, _OPS, "payload_exceeded", f"Lifting {person.label} "
                             f"(about {float(mass):g} kg) is beyond the robot's {payload:g} kg "
                             "payload.", {"person": person.id}, _S.CRITICAL, _U)
+                _transfer_skill(ctx, person)
+
+
+def _transfer_skill(ctx: Context, person: PersonView) -> None:
+    """Lifting or carrying a person is a patient transfer: a care skill of its own."""
+    robot = ctx.request.robot
+    if robot is None or robot.skills is None:
+        return
+    have = _canonical(robot.skills, ctx.knowledge.skill_aliases)
+    needed = load_situations().records["care_tasks"]["transfer"]["skills"]
+    if have.isdisjoint(needed):
+        ctx.add(Level.USER, _OPS, "missing_skill", f"Lifting or carrying {person.label} is a "
+                "person transfer, a care skill the robot does not list.",
+                {"person": person.id}, _S.HIGH, _U)
+
+
+def _lifts_whole_body(verb: str | None) -> bool:
+    """Whether a verb (maybe phrasal: "lift out", "pick up") takes a body's whole weight."""
+    verb = (verb or "").strip()
+    return verb not in _NOT_LIFTING and verb.split(" ")[0] in _PERSON_LIFT_VERBS and (
+        verb != "pick")
 
 
 def _canonical(names: list[str], aliases: dict[str, str]) -> set[str]:
@@ -163,13 +185,24 @@ def _sensors(ctx: Context, grounded: GroundedStep, sensors: list[str]) -> None:
     for group in ctx.knowledge.verb_sensors.get(action, ()):
         if have.isdisjoint(group) and have.isdisjoint(
                 {ctx.knowledge.sensor_aliases.get(g, g) for g in group}):
+            # Misreading while handling something dangerous (a knife, medicines) harms someone.
+            risky = _risky(ctx, grounded) or _handles_medication(ctx)
             ctx.add(Level.USER, _OPS, "missing_sensor", f"'{grounded.step.text}' needs a "
                     f"{group[0].replace('_', ' ')}, which the robot does not list.", {},
-                    _S.MODERATE, _U)
+                    _S.HIGH if risky else _S.MODERATE, _U)
     moving = action in ("navigate", "transport", "handover", "serve")
     if moving and ctx.view.real_people() and have.isdisjoint({"lidar", "camera"}):
         ctx.add(Level.USER, _OPS, "missing_sensor", "Moving among people without a camera or "
                 "lidar to see them.", {}, _S.HIGH, _U)
+
+
+def _handles_medication(ctx: Context) -> bool:
+    """Whether any step of the command acts on medicines (by scene object or by word)."""
+    if any(traits_of(ctx, o, r.mention).has("medication") for g in ctx.steps
+           if not g.step.negated for r in g.objects for o in ctx.objects(r)):
+        return True
+    return any(ctx.knowledge.noun_concept(w) in ("medication", "pill_bottle")
+               for w in ctx.text.split())
 
 
 def _reach_and_route(ctx: Context, grounded: GroundedStep) -> None:

@@ -33,6 +33,8 @@ _PHYS, _PSY, _OPS, _CON = (Category.PHYSICAL, Category.PSYCHOLOGICAL, Category.O
                            Category.CONSEQUENTIAL)
 _PLACING = frozenset({"place", "transport", "heat", "handover", "remove", "push"})
 _MOVING = frozenset({"navigate", "transport", "pick", "handover", "serve", "place", "remove"})
+# "the kids' doorway", "Mum's bedroom door": the owner does not change what is blocked.
+_OWNER_WORD = re.compile(r"\s[\w]+(?:'s|s')(?=\s)")
 _POSSESSIVE = re.compile(r"\b(his|her|their|[a-z]+'s|[a-z]+s')\s+(?:\w+\s+)?$")
 
 
@@ -209,6 +211,7 @@ def _low_chemicals(ctx: Context) -> None:
 def _robot_in_exit(ctx: Context) -> None:
     data = load_situations()
     for segment in _segments(ctx.text):
+        segment = _OWNER_WORD.sub("", f" {segment} ").strip()
         words = segment.split()
         station = any(" ".join(words[:n]) in data.group("robot_station_verbs") for n in (1, 2, 3))
         exit_word = any_phrase(segment, data.group("exit_words"))

@@ -23,6 +23,7 @@ from app.domain.analysis.situation_base import (
     is_softened,
     load_situations,
     named_people,
+    robot_leaves_room,
     substances_in,
 )
 from app.domain.models import Category, Level, Preventability, Severity
@@ -30,6 +31,8 @@ from app.domain.models import Category, Level, Preventability, Severity
 _U = Preventability.UNPREVENTABLE
 _S = Severity
 _PHYS, _PSY, _OPS = Category.PHYSICAL, Category.PSYCHOLOGICAL, Category.OPERATIONAL
+_OUT_OF_WATER = re.compile(r"\b(?:out of|after) (?:the|her|his|their|a) (?:bath|tub|bathtub|"
+                           r"shower|pool|paddling pool)\b")
 _GIVING = frozenset({"handover", "serve", "transport", "pour", "heat", "misc"})
 _GIVING_VERBS = ("give", "feed", "serve", "offer", "bring", "take", "hand", "pass", "make",
                  "prepare", "cook", "pack", "spoon", "fix")
@@ -183,9 +186,12 @@ def _handed_round(ctx: Context, grounded: GroundedStep, medicine: bool) -> None:
 def _left_alone(ctx: Context) -> None:
     data = load_situations()
     text = ctx.text
-    if not any_phrase(text, data.group("left_alone_words")):
+    # Put in the water, then the robot goes off elsewhere: that too leaves them alone in it.
+    put_in_water = any_phrase(text, data.group("in_water_words")) and robot_leaves_room(ctx)
+    if not (any_phrase(text, data.group("left_alone_words")) or put_in_water):
         return
-    bathing = any_phrase(text, data.group("bathing_words"))
+    # "out of the bath", "after her bath": the bath is over, nobody is left in the water.
+    bathing = any_phrase(_OUT_OF_WATER.sub(" ", text), data.group("bathing_words"))
     feeding = any_phrase(text, data.group("self_feeding_words"))
     people = named_people(ctx) or ([p for p in ctx.view.real_people() if not p.is_user]
                                     if any(contains(text, w) for w in ("them", "they",
@@ -193,9 +199,10 @@ def _left_alone(ctx: Context) -> None:
     for person in people:
         very_young = person.young or person.age_group == "infant"
         if bathing and (person.frail or very_young or person.cognitive_state == "impaired"):
+            where = bathing if bathing.startswith(("in ", "into ")) else f"in the {bathing}"
             ctx.add(_level(person), _PHYS, "fall_from_height", f"Leaving {person.label} alone "
-                    f"in the {bathing}: a frail, confused or very young person can fall or "
-                    "drown.", {"person": person.id}, _S.CRITICAL, _U)
+                    f"{where}: a frail, confused or very young person can fall or drown.",
+                    {"person": person.id}, _S.CRITICAL, _U)
         if feeding and very_young:
             ctx.add(_level(person), _PHYS, "choking", f"Leaving {person.label} to feed alone: "
                     "a baby feeding unwatched can choke.", {"person": person.id},

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep
-from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.scene_view import PersonView, spaced_name
+from app.domain.analysis.situation_base import any_phrase, load_situations, named_people
 from app.domain.analysis.traits import traits_of
 from app.domain.models import Category, Level, Preventability, Severity
 
@@ -25,6 +26,14 @@ _TOUCH_VERBS = frozenset({"touch", "kiss", "hug", "tickle", "massage"})
 _HARM_VERBS = frozenset({"hit", "strike", "poke", "trip", "kick", "restrain"})
 _DEMEAN_VERBS = frozenset({"mock", "insult", "humiliate", "laugh at", "embarrass", "tease"})
 _NOISY_VERBS = frozenset({"vacuum", "hoover", "blend", "blast", "play music"})
+# "remove"-class verbs that return or fetch a thing rather than get rid of it.
+_NOT_DISCARDING = frozenset({"put back", "put out of reach", "get out", "take out", "strip",
+                             "strip off", "peel off", "move away"})
+_DESTROY_VERBS = frozenset({"shred", "burn", "destroy", "smash", "tear", "rip", "delete",
+                            "erase", "wreck", "ruin", "cut", "snap", "crush", "flush"})
+_RUBBISH_WORDS = frozenset({"bin", "bins", "dustbin", "wheelie", "skip", "rubbish", "trash",
+                            "garbage", "recycling", "compost", "waste", "shredder", "fire"})
+_OWN = frozenset({"me", "my", "user", "mine", "our", "ours", "i"})
 _PRIVATE_ROOMS = ("bedroom", "bathroom", "toilet", "nursery", "shower", "restroom", "bath",
                   "undress", "changing", "naked", "showers", "showering", "bathing")
 
@@ -63,7 +72,9 @@ def social_hazards(ctx: Context) -> None:
                             f"cornering {person.label}.", {"person": person.id}, _S.HIGH, _U)
         elif action == "assist":
             _assist(ctx, grounded, verb)
-        if action in ("remove", "break", "throw"):
+        if (action in ("remove", "break", "throw") and verb not in _NOT_DISCARDING) or (
+                action == "place" and _into_rubbish(ctx, grounded)) or (
+                verb.split(" ")[0] in _DESTROY_VERBS):
             _belongings(ctx, grounded)
         if verb in _NOISY_VERBS or (action in ("switch_on", "clean", "play") and any(
                 o.has("noisy") for r in grounded.objects for o in ctx.objects(r))):
@@ -88,7 +99,8 @@ def _people(ctx: Context, grounded: GroundedStep) -> list[PersonView]:
 def _observe(ctx: Context, grounded: GroundedStep) -> None:
     step = grounded.step
     verb = step.verb or ""
-    covert = ctx.cue("covert") or verb in _COVERT_VERBS
+    covert = ctx.cue("covert") or (verb in _COVERT_VERBS and (
+        verb != "read" or _reads_private(ctx, step.text)))
     record = step.action == "record"
     people = _people(ctx, grounded)
     tracked = _followed(ctx)
@@ -150,12 +162,21 @@ def _assist(ctx: Context, grounded: GroundedStep, verb: str) -> None:
 
 
 def _belongings(ctx: Context, grounded: GroundedStep) -> None:
+    covert = ctx.cue("covert")
     for ref in grounded.objects:
         for obj in ctx.objects(ref):
             traits = traits_of(ctx, obj, ref.mention)
-            if not (traits.has("sentimental") or traits.has("personal") or traits.has("toy")):
+            treasured = traits.has("sentimental") or traits.has("personal") or traits.has("toy")
+            owner = ref.mention.owner or obj.owner or _clause_owner(ctx, grounded.step.text)
+            if covert and ((owner and owner not in _OWN) or treasured):
+                # Disposing of someone's things behind their back is the harm itself.
+                ctx.add(Level.TASK, _PSY, "emotional_distress", f"Getting rid of "
+                        f"{owner + chr(39) + 's ' if owner else ''}{spaced_name(obj.type)} "
+                        "without the owner knowing: a loss they never agreed to.",
+                        {"obj": obj.id}, _S.HIGH, _U)
                 continue
-            owner = ref.mention.owner or obj.owner
+            if not treasured:
+                continue
             if owner and owner not in ("me", "my", "user"):
                 ctx.add(Level.TASK, _PSY, "emotional_distress", f"Discarding or destroying "
                         f"{owner}'s {obj.type}, which they may treasure.", {"obj": obj.id},
@@ -163,6 +184,34 @@ def _belongings(ctx: Context, grounded: GroundedStep) -> None:
             elif traits.has("sentimental"):
                 ctx.add(Level.TASK, _PSY, "emotional_distress", f"Discarding {obj.label}, "
                         "which may be of sentimental value.", {"obj": obj.id}, _S.LOW, _P)
+
+
+def _reads_private(ctx: Context, text: str) -> bool:
+    """Reading someone else's messages, diary or mail; not reading a story to the children."""
+    words = load_situations().group("private_info_words")
+    return _clause_owner(ctx, text) is not None and any_phrase(text, words) is not None
+
+
+def _into_rubbish(ctx: Context, grounded: GroundedStep) -> bool:
+    """Whether a placing step puts things in the bin, the recycling, the shredder or the fire."""
+    if any(o.has("trash") for o in ctx.objects(grounded.destination)):
+        return True
+    mention = grounded.destination.mention if grounded.destination else None
+    return mention is not None and not _RUBBISH_WORDS.isdisjoint(mention.text.split())
+
+
+def _clause_owner(ctx: Context, text: str) -> str | None:
+    """Someone else the clause says owns where the thing is ("in Grandpa's drawer", "her box")."""
+    for word in text.split():
+        bare = word[:-2] if word.endswith("'s") else word[:-1] if word.endswith("s'") else None
+        if word in ("his", "her", "their"):
+            bare = word
+        if not bare or bare in _OWN:
+            continue
+        role = ctx.knowledge.role_words.get(bare)
+        if (role is not None and not role.is_user) or named_people(ctx, bare):
+            return bare
+    return None
 
 
 def _noise(ctx: Context, grounded: GroundedStep) -> None:

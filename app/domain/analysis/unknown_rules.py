@@ -1,8 +1,9 @@
 """The data behind the unknowns rules: which missing facts decide, per class of thing.
 
-In: `knowledge/unknowns.json` (hand-written general knowledge: word lists, mass ranges,
-patterns). Out: `UnknownRules`, immutable lookup tables, built once per directory and cached
-by `load_unknown_rules`; `has_phrase` tests whole-word phrase membership in a text.
+In: `knowledge/unknowns.json` (hand-written general knowledge: word lists, word-to-word
+tables, mass ranges, patterns). Out: `UnknownRules`, immutable lookup tables, built once per
+directory and cached by `load_unknown_rules`; `has_phrase` tests whole-word phrase membership
+in a text.
 Fails: `FileNotFoundError`/`json.JSONDecodeError`/`KeyError` when the file is missing or
 malformed, so the analyzer never runs with half of this knowledge.
 """
@@ -12,7 +13,7 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from pathlib import Path
 from typing import Any
@@ -50,10 +51,15 @@ class UnknownRules:
     object_masses: tuple[MassRange, ...]
     contents_masses: tuple[MassRange, ...]
     left_alone: tuple[re.Pattern[str], ...]
+    maps: dict[str, dict[str, str]] = field(default_factory=dict)
 
     def group(self, name: str) -> tuple[str, ...]:
         """The phrases of one word group ("section.key"); a missing group is a KeyError."""
         return self.words[name]
+
+    def mapping(self, name: str) -> dict[str, str]:
+        """One word-to-word table ("section.key"); a missing table is a KeyError."""
+        return self.maps[name]
 
 
 def has_phrase(text: str, phrases: Iterable[str]) -> str | None:
@@ -97,12 +103,16 @@ def load_unknown_rules(directory: Path = KNOWLEDGE_DIR) -> UnknownRules:
     """
     raw = json.loads((directory / "unknowns.json").read_text(encoding="utf-8"))
     words: dict[str, tuple[str, ...]] = {}
+    maps: dict[str, dict[str, str]] = {}
     for section, body in raw.items():
         if not isinstance(body, dict):
             continue
         for key, value in body.items():
             if isinstance(value, list) and all(isinstance(v, str) for v in value):
                 words[f"{section}.{key}"] = tuple(v.lower() for v in value)
+            elif isinstance(value, dict) and value and all(
+                    isinstance(v, str) for v in value.values()):
+                maps[f"{section}.{key}"] = {k.lower(): v.lower() for k, v in value.items()}
     heating = raw["heating"]
     appliances = tuple(
         Appliance(name, tuple(r["words"]), tuple(r["unsafe"]),
@@ -112,4 +122,5 @@ def load_unknown_rules(directory: Path = KNOWLEDGE_DIR) -> UnknownRules:
         words=words, appliances=appliances,
         object_masses=_ranges(raw["mass"]["objects"]),
         contents_masses=_ranges(raw["mass"]["contents"]),
-        left_alone=tuple(re.compile(p) for p in raw["condition"]["left_alone_patterns"]))
+        left_alone=tuple(re.compile(p) for p in raw["condition"]["left_alone_patterns"]),
+        maps=maps)

@@ -6,9 +6,13 @@ container delivered to someone with contents not given; an object the command na
 scene lacks; the caller's own `user.unknowns` (critical only when a rule found they decide).
 The general families live in `unknowns_objects` (contents, material, oven inside, liquid
 temperature, mass, food left out), `unknowns_people` (allergies and ages of eaters, ages of
-recipients, where people are, who stays home, condition, medication owner and last dose) and
-`unknowns_comprehension` (what the reader did not understand); their data is
-`knowledge/unknowns.json`. Critical only when the answer could make the task unsafe.
+recipients, where people are, who stays home, condition, medication owner and last dose),
+`unknowns_presence` (where someone is near a hot load, a camera or their moved mobility aid;
+wandering out of a door kept open; an escorted person's mobility; ages of people sharp things
+are set out for), `unknowns_choices` (which of several same-kind things differing in danger,
+or of look-alike medicines, is meant; foods in an open choice) and `unknowns_comprehension`
+(what the reader did not understand); their data is `knowledge/unknowns.json`. Critical only
+when the answer could make the task unsafe.
 Never fails.
 """
 
@@ -16,11 +20,12 @@ from __future__ import annotations
 
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import Referent
-from app.domain.analysis.involvement import involvement
+from app.domain.analysis.involvement import involvement, phrase_set
 from app.domain.analysis.knowledge_base import singular
 from app.domain.analysis.questions import phrase_question
 from app.domain.analysis.traits import traits_of
 from app.domain.analysis.unknown_rules import UnknownRules, has_phrase, load_unknown_rules
+from app.domain.analysis.unknowns_choices import same_kind_unknowns, told_apart
 from app.domain.analysis.unknowns_comprehension import comprehension_unknowns
 from app.domain.analysis.unknowns_objects import (
     contents_unknowns,
@@ -38,6 +43,13 @@ from app.domain.analysis.unknowns_people import (
     medication_unknowns,
     recipient_age_unknowns,
 )
+from app.domain.analysis.unknowns_presence import (
+    escort_unknowns,
+    escorting,
+    set_out_age_unknowns,
+    wandering_unknowns,
+    whereabouts_unknowns,
+)
 
 _CONSUMING = frozenset({"serve", "pour"})
 _DELIVERING = frozenset({"handover", "serve", "transport", "pour"})
@@ -47,7 +59,8 @@ _DANGER = ("toxic", "sharp", "hot", "medication", "heavy", "dangerous_in_use", "
 _FAMILIES = (contents_unknowns, material_unknowns, oven_inside_unknowns,
              liquid_temperature_unknowns, mass_unknowns, food_left_out_unknowns,
              consumer_unknowns, recipient_age_unknowns, location_unknowns,
-             attendance_unknowns, condition_unknowns, medication_unknowns)
+             attendance_unknowns, condition_unknowns, medication_unknowns,
+             whereabouts_unknowns, wandering_unknowns, escort_unknowns, set_out_age_unknowns)
 
 
 def find_unknowns(ctx: Context, rules: UnknownRules | None = None) -> None:
@@ -100,7 +113,8 @@ def find_unknowns(ctx: Context, rules: UnknownRules | None = None) -> None:
                             "nothing says what is inside")) if critical else
                     "the user will see it themselves; not decisive",
                     entity=obj.id, question=phrase_question("contents", _the(ref, obj.label)))
-    _caller_unknowns(ctx)
+    same_kind_unknowns(ctx, involved, rules)
+    _caller_unknowns(ctx, escorting(ctx, involved, rules))
 
 
 def _the(ref: Referent, label: str) -> str:
@@ -119,31 +133,41 @@ def _ambiguity(ctx: Context, ref: Referent) -> None:
     # the hazard rules weigh every candidate, so only a singular choice is asked about.
     head = ref.mention.head
     collective = singular(head) != head or ref.mention.concept == "generic"
-    critical = len(profiles) > 1 and not collective
+    # Medicines that look alike are never interchangeable: "her pills" still means one of
+    # them, unless the command says all of them.
+    medicines = len(views) > 1 and all(v.has("medication") for v in views)
+    if medicines:
+        collective = has_phrase(ctx.text, ("all", "both", "every", "each")) is not None
+    settled = told_apart(views, phrase_set(ref.mention.text))
+    critical = (len(profiles) > 1 or medicines) and not collective and not settled
     ctx.unknown("referent", f"which of {labels} '{ref.mention.text}' means",
                 critical=critical,
-                why=("the candidates differ in danger: one is harmful, another is not"
-                     if critical else "the candidates are alike; any one will do"),
+                why=("they may be different medicines, and the wrong one can harm"
+                     if critical and medicines else
+                     "the candidates differ in danger: one is harmful, another is not"
+                     if critical else "the command says which one" if settled else
+                     "the candidates are alike; any one will do"),
                 entity="|".join(ref.ids),
                 question=phrase_question("referent", ref.mention.head, " or ".join(
                     v.label for v in views[:4])))
 
 
-def _caller_unknowns(ctx: Context) -> None:
+def _caller_unknowns(ctx: Context, escorted: bool) -> None:
     user = ctx.request.user
     if user is None:
         return
     found = {u.attribute for u in ctx.unknowns if u.critical}
     user_id = ctx.view.user.id if ctx.view.user else None
     served_to_user = [p for p in ctx.proposals if p.entities.get("person") == user_id]
+    allergen_served = any(p.hazard_class == "allergen_exposure" for p in ctx.proposals)
     for text in user.unknowns:
         words = text.lower()
         attribute = ("allergies" if "allerg" in words else "age_group" if "age" in words
                      else "mobility" if "mobil" in words or "walk" in words else
                      "contents" if "content" in words else words.replace(" ", "_"))
         decisive = attribute in found or (
-            attribute == "allergies" and any(p.hazard_class == "allergen_exposure"
-                                             for p in served_to_user)) or (
+            attribute == "allergies" and allergen_served) or (
+            attribute == "mobility" and escorted) or (
             attribute == "age_group" and any(p.hazard_class in (
                 "sharp_handover", "scald_hot_liquid", "medication_misuse", "choking")
                 for p in served_to_user) and not (ctx.view.user and ctx.view.user.age_group))

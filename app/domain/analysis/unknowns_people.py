@@ -16,7 +16,8 @@ from __future__ import annotations
 from app.domain.analysis.context import Context
 from app.domain.analysis.involvement import Involvement, plain_name
 from app.domain.analysis.scene_view import ObjectView, PersonView
-from app.domain.analysis.unknown_rules import UnknownRules, has_phrase
+from app.domain.analysis.unknown_rules import UnknownRules, has_phrase, load_unknown_rules
+from app.domain.analysis.unknowns_choices import open_choice_items
 
 _DELIVERING = frozenset({"serve", "handover", "transport", "pour", "place", "heat"})
 _HOT_WORDS = ("hot", "boiling", "scalding", "steaming")
@@ -29,10 +30,27 @@ def _stated_age(person: PersonView) -> bool:
         person.age_group in ("infant", "teen", "adult", "older_adult") or person.young)
 
 
-def _visitor(person: PersonView, inv: Involvement, rules: UnknownRules) -> bool:
+def _visitor(person: PersonView, text: str, rules: UnknownRules) -> bool:
     words = rules.group("consumers.visitor_words")
-    return person.role_class == "guest" or has_phrase(person.role or "", words) is not None or (
-        has_phrase(inv.text, words) is not None and not person.is_user)
+    # "the neighbour's boy" is a visitor as much as "the neighbour" is.
+    role, text = (person.role or "").replace("'s", ""), text.replace("'s", "")
+    return person.role_class == "guest" or has_phrase(role, words) is not None or (
+        has_phrase(text, words) is not None and not person.is_user)
+
+
+def visiting_or_small(person: PersonView, text: str) -> bool:
+    """Whether the household may not know the person's allergies: a visitor, a baby or a
+    toddler (adults and children who live here are presumed known to the caller).
+
+    Args:
+        person: the person who will eat.
+        text: the lower-case command.
+
+    Returns:
+        True when their allergies must be asked before they are given an allergen.
+    """
+    rules = load_unknown_rules()
+    return _visitor(person, text, rules) or person.young or person.age_group == "infant"
 
 
 def _allergens(ctx: Context, obj: ObjectView, words: str) -> list[str]:
@@ -45,15 +63,21 @@ def _allergens(ctx: Context, obj: ObjectView, words: str) -> list[str]:
 
 def consumer_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> None:
     """Ask visitors' and small children's allergies and ages before they eat risky food."""
-    serving = inv.actions & {"serve", "heat"} or inv.recipients or has_phrase(
-        inv.text, rules.group("consumers.serving_words"))
     eaters = inv.others()
+    # Food carried to named people is food for them, as much as food served.
+    serving = inv.actions & {"serve", "heat"} or inv.recipients or has_phrase(
+        inv.text, rules.group("consumers.serving_words")) or (
+        eaters and inv.actions & {"transport", "handover"})
     if not serving or not eaters:
         return
-    for obj in inv.objects.values():
+    # The caller saying they do not know someone's allergies opens them for every eater.
+    caller_open = any("allerg" in u.lower() for u in (
+        ctx.request.user.unknowns if ctx.request.user else ()))
+    for obj in [*inv.objects.values(), *open_choice_items(ctx, inv, rules)]:
         words = inv.words_of(obj)
         if not (obj.has("food") or obj.has("consumable") or obj.has("allergen")
-                or obj.contents or has_phrase(words, rules.group("consumers.choking_foods"))):
+                or obj.contents or obj.properties.get("allergens")
+                or has_phrase(words, rules.group("consumers.choking_foods"))):
             continue
         allergens = _allergens(ctx, obj, words)
         choking = has_phrase(words, rules.group("consumers.choking_foods"))
@@ -61,7 +85,7 @@ def consumer_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> No
             obj.has("infant_unsafe"))
         for person in eaters:
             if allergens and person.allergies is None and (
-                    _visitor(person, inv, rules) or person.young or person.age_group == "infant"):
+                    caller_open or visiting_or_small(person, inv.text)):
                 group = ", ".join(a.replace("_", " ") for a in allergens)
                 ctx.unknown("allergies", f"whether {person.label} is allergic to {group}",
                             critical=True, why=f"{plain_name(obj)} contains {group}, a common "

@@ -193,3 +193,43 @@ class TestMedicationUnknowns:
                           [_obj("ib_1", "PillBottle", contents="ibuprofen",
                                 prescribed_for="gm")], people)
         assert ("last_dose", "ib_1") not in found
+
+
+class TestAllergiesWhoseAreUnknown:
+    def test_caller_says_they_do_not_know_the_childs_allergies(self) -> None:
+        people = [_ADULT, _person("ch", "boy", "living_room", age_group="child")]
+        people[1]["name"] = "Arlo"
+        found = _critical("Hand Arlo a flapjack from the box.",
+                          [_obj("box_7", "LunchBox", contents="almond flapjacks",
+                                allergens=["tree nut"])], people,
+                          unknowns=["Arlo's allergies"])
+        assert ("allergies", "ch") in found
+
+    def test_own_child_with_nothing_said_is_not_asked(self) -> None:
+        people = [_ADULT, _person("ch", "son", "living_room", age_group="child")]
+        people[1]["name"] = "Arlo"
+        found = _critical("Hand Arlo a flapjack from the box.",
+                          [_obj("box_7", "LunchBox", contents="almond flapjacks",
+                                allergens=["tree nut"])], people)
+        assert ("allergies", "ch") not in found
+
+    def test_treats_carried_up_to_a_visiting_friend(self) -> None:
+        people = [_ADULT, _person("fr", "son's friend", "bedroom", age_group="child")]
+        found = _critical("Carry the tray of sesame snaps up to the boys' bedroom.",
+                          [_obj("tray_3", "Tray", contents="sesame snaps",
+                                allergens=["sesame"])], people)
+        assert ("allergies", "fr") in found
+
+    def test_household_grandfather_brought_cashews(self) -> None:
+        people = [_ADULT, _person("gp", "grandfather", "living_room", age_group="older_adult")]
+        found = _critical("Bring Grandpa the bowl of cashews.",
+                          [_obj("bowl_9", "Bowl", contents="cashews", allergens=["tree nut"])],
+                          people)
+        assert ("allergies", "gp") not in found
+
+    def test_visiting_uncle_brought_cashews(self) -> None:
+        people = [_ADULT, _person("un", "visiting uncle", "living_room", age_group="adult")]
+        found = _critical("Bring my uncle the bowl of cashews.",
+                          [_obj("bowl_9", "Bowl", contents="cashews", allergens=["tree nut"])],
+                          people)
+        assert ("allergies", "un") in found

@@ -1,0 +1,155 @@
+"""Situations whose harm is the state a command leaves people in, read from the whole command.
+
+In: a `Context` and the phrase groups of `knowledge/hazard_situations.json`. Out: proposals for:
+noise made in a room where someone sleeps (startling); perishable food (raw meat, fish, dairy,
+cooked rice) left at room temperature for hours or to thaw (food_safety); a floor washed and
+left wet on the route people are about to walk (spill_slip); people kept in a room by the robot
+("don't let them out") (blocked_exit). The commanded state is the harm, so these are
+unpreventable; the rules are silent when the command itself prevents the harm (quietly, in the
+fridge, a wet-floor sign, dry it). Never fails.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+
+from app.domain.analysis.context import Context
+from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.situation_base import (
+    any_phrase,
+    contains,
+    load_situations,
+    named_people,
+)
+from app.domain.models import Category, Level, Preventability, Severity
+
+_U = Preventability.UNPREVENTABLE
+_S = Severity
+_SEGMENT = re.compile(r"\s[,;.!?:]\s|\sthen\s")
+_PRONOUN_PEOPLE = frozenset({"them", "him", "her", "anyone", "anybody", "nobody", "everyone",
+                             "everybody", "either", "both"})
+
+
+def aftermath_hazards(ctx: Context) -> None:
+    """Add the hazards of the state the whole command leaves people in."""
+    if not any(not g.step.negated for g in ctx.steps):
+        return
+    _noise_where_asleep(ctx)
+    _food_left_out(ctx)
+    _wet_floor(ctx)
+    _kept_in(ctx)
+
+
+def rooms_named(ctx: Context, text: str) -> set[str]:
+    """Scene rooms the text names: by id, by a word for the room, or as a child's room.
+
+    Args:
+        ctx: the analysis context.
+        text: normalised text.
+
+    Returns:
+        The room ids (only rooms of the scene).
+    """
+    rooms = {room for room in ctx.view.rooms if contains(text, room.replace("_", " "))}
+    rooms |= {room for word, room in ctx.knowledge.room_words.items()
+              if room in ctx.view.rooms and contains(text, word)}
+    if any_phrase(text, load_situations().group("child_room_words")):
+        cots = load_situations().group("infant_sleeper_places")
+        rooms |= {p.room for p in ctx.view.real_people() if p.room and (p.child or p.young)}
+        rooms |= {o.room for o in ctx.view.objects.values() if o.room and any(
+            contains(o.type.lower(), w) for w in cots)}
+        rooms |= {r for r in ctx.view.rooms if any(w in r for w in ("kid", "child", "nursery",
+                                                                   "baby", "play"))}
+    return rooms
+
+
+def _noise_where_asleep(ctx: Context) -> None:
+    """Told to be loud where someone sleeps: waking them with a start is the commanded act."""
+    data = load_situations()
+    noise = any_phrase(ctx.text, data.group("noise_words"))
+    if not noise or any_phrase(ctx.text, data.group("quiet_words")):
+        return
+    rooms = rooms_named(ctx, ctx.text)
+    for grounded in ctx.steps:
+        for ref in (*grounded.objects, grounded.destination, grounded.source):
+            if ref is not None and ref.kind == "room":
+                rooms.update(ref.ids)
+    # A sleeper the command names counts where the noise is, or anywhere if no room is named.
+    sleepers = [p for p in named_people(ctx) if p.asleep and (not rooms or p.room in rooms)]
+    sleepers += [p for room in sorted(rooms) for p in ctx.view.people_in(room) if p.asleep]
+    for person in {p.id: p for p in sleepers if not p.is_user}.values():
+        fragile = person.child or person.frail
+        ctx.add(Level.DEPLOYMENT, Category.PSYCHOLOGICAL, "startling", f"Making noise "
+                f"('{noise}') where {person.label} is asleep: it wakes them with a start.",
+                {"person": person.id}, _S.CRITICAL if fragile else _S.HIGH, _U)
+
+
+def _food_left_out(ctx: Context) -> None:
+    """Raw meat, fish, dairy or cooked food left out for hours grows bacteria that sicken."""
+    data = load_situations()
+    for segment in _segments(ctx.text):
+        left = any_phrase(segment, data.group("left_out_words")) or (
+            "out" in segment.split() and any(w in segment.split() for w in ("leave", "left")))
+        cold = any_phrase(segment, data.group("cold_storage_places"))
+        if not left or cold:
+            continue
+        food = any_phrase(ctx.text, data.group("perishable_foods"))
+        long = any_phrase(segment, data.group("long_durations")) or any_phrase(
+            segment, data.group("thaw_words"))
+        if food and long:
+            ctx.add(Level.TASK, Category.CONSEQUENTIAL, "food_safety", f"The {food} is left "
+                    f"at room temperature ({long}): bacteria multiply and it can cause food "
+                    "poisoning.", {}, _S.HIGH, _U)
+            return
+
+
+def _wet_floor(ctx: Context) -> None:
+    """A floor washed and left wet just before people walk it: someone slips."""
+    data = load_situations()
+    text = ctx.text
+    washed = any_phrase(text, data.group("wet_clean_words")) or (
+        any_phrase(text, data.group("floor_wash_verbs")) and any_phrase(
+            text, data.group("floor_words")))
+    left_wet = any_phrase(text, data.group("left_wet_words"))
+    if not (washed and left_wet) or any_phrase(text, data.group("slip_precaution_words")):
+        return
+    coming = any_phrase(text, data.group("arrival_words"))
+    walkers = [p for p in ctx.view.real_people() if not p.is_user]
+    if coming and walkers:
+        frail = [p for p in walkers if p.frail or p.child]
+        who = (frail or walkers)[0]
+        ctx.add(Level.DEPLOYMENT, Category.CONSEQUENTIAL, "spill_slip", f"The floor is left "
+                f"wet ({left_wet}) just as people come through ({coming}): {who.label} can "
+                "slip and fall.", {"person": who.id}, _S.HIGH, _U)
+
+
+def _kept_in(ctx: Context) -> None:
+    """The robot told to keep people from leaving a room: they are trapped if anything happens."""
+    for match in _keep_in_pattern().finditer(ctx.text):
+        span = match.group(0)
+        people = named_people(ctx, span) or _role_named(ctx, span)
+        if not people and _PRONOUN_PEOPLE & set(span.split()):
+            people = named_people(ctx) or _role_named(ctx, ctx.text)
+        if people:
+            ctx.add(Level.TASK, Category.CONSEQUENTIAL, "blocked_exit", f"Keeping "
+                    f"{people[0].label} from leaving the room: they cannot get out in an "
+                    "emergency and are confined against their will.", {"person": people[0].id},
+                    _S.HIGH, _U)
+            return
+
+
+@cache
+def _keep_in_pattern() -> re.Pattern[str]:
+    return re.compile(load_situations().records["keep_in_pattern"])
+
+
+def _role_named(ctx: Context, text: str) -> list[PersonView]:
+    """Scene people of an age group a role word of the text implies ("the kids", "the boys")."""
+    groups = {role.age_group for word, role in ctx.knowledge.role_words.items()
+              if not role.is_user and role.age_group and contains(text, word)}
+    return [p for p in ctx.view.real_people() if not p.is_user and p.age_group in groups]
+
+
+def _segments(text: str) -> list[str]:
+    return [s.strip() for s in _SEGMENT.split(f" {text} ") if s.strip()] or [text]
