@@ -62,11 +62,23 @@ def _near(ctx: Context, room: str | None) -> list[PersonView]:
     return ctx.view.people_in(room)
 
 
+def _end_room(ctx: Context, grounded: GroundedStep) -> str | None:
+    """Where the carried thing ends up: the recipient's room, the destination room, or the
+    room of the object it is set down on."""
+    for person in ctx.people(grounded.recipient):
+        if person.room:
+            return person.room
+    destination = grounded.destination
+    if destination is None:
+        return None
+    if destination.kind == "room":
+        return destination.ids[0]
+    return next((o.room for o in ctx.objects(destination) if o.room), None)
+
+
 def _carry(ctx: Context, grounded: GroundedStep) -> None:
     recipients = {p.id for p in ctx.people(grounded.recipient)}
-    end_room = next((p.room for p in ctx.people(grounded.recipient) if p.room), None) or (
-        grounded.destination.ids[0] if grounded.destination and
-        grounded.destination.kind == "room" else None)
+    end_room = _end_room(ctx, grounded)
     for obj, ref in _pairs(ctx, grounded):
         traits = traits_of(ctx, obj, ref.mention)
         route = ctx.rooms_between(obj.room or ctx.view.robot_room, end_room or obj.room)
@@ -90,6 +102,16 @@ def _carry(ctx: Context, grounded: GroundedStep) -> None:
             if traits.has("toxic") and not traits.has("medication"):
                 ctx.add(level, _PHYS, "chemical_exposure", f"Carrying {obj.label}, which is "
                         f"toxic, near {who}.", entities, _S.MODERATE, _P)
+        if traits.has("hot") and not bystanders:
+            # Anyone on the way or where it is set down can be splashed: a preventable hazard
+            # the contract handles (speed, distance, a lid), whoever they are.
+            present = [p for room in route for p in ctx.view.people_in(room)
+                       if p.id not in recipients]
+            for person in present[:1]:
+                ctx.add(Level.DEPLOYMENT, _PHYS, "scald_hot_liquid",
+                        f"Carrying {obj.label}, which is hot, where {person.label} is: a spill "
+                        "scalds.", {"obj": obj.id, "person": person.id, "room": person.room},
+                        _S.MODERATE, _P, traits.hot_confidence)
         if traits.has("sharp") and not recipients:
             ctx.add(traits.level("sharp"), _PHYS, "sharp_laceration",
                     f"Handling {obj.label}, a blade: keep the edge covered and pointed down.",

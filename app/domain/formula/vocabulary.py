@@ -86,7 +86,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
            "the person could reach and take the object unaided"),
     Symbol("occupied", ("room",), "bool", "at least one person is in the room"),
     # The robot.
-    Symbol("speed", ("robot",), "number", "the robot's current speed in m/s", False),
+    Symbol("speed", ("robot",), "number",
+           "the robot's current speed in m/s (unknown while moving at an unstated top speed)"),
     Symbol("max_speed", ("robot",), "number", "the robot's top speed in m/s"),
     Symbol("payload", ("robot",), "number", "the most the robot can carry, in kg"),
     Symbol("load_kg", ("robot",), "number", "the mass of what the robot holds, in kg"),

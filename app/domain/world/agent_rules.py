@@ -42,7 +42,9 @@ def _number_or_unknown(value: float | None, symbol: str) -> FactValue:
 
 @_rule("speed")
 def _speed(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    return state.robot.speed
+    # Moving at an unstated top speed: the same unknown as `max_speed(robot)`.
+    speed = state.robot.speed
+    return Unknown(fact_key("max_speed", ("robot",))) if speed is None else speed
 
 
 @_rule("recording")

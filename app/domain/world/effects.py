@@ -95,7 +95,8 @@ def _resting_on(draft: _Draft, support: str) -> list[ObjectState]:
 def _go(draft: _Draft, action: Action, room: str | None, position: Point | None,
         beside: str | None) -> None:
     before = draft.before.robot
-    speed = action.params.get("speed", before.max_speed if before.max_speed is not None else 0.0)
+    # Without a speed of its own the move runs at the robot's top speed, unknown if not given.
+    speed = action.params.get("speed", before.max_speed)
     standoff = action.params.get("standoff")
     if standoff and position is not None and before.position is not None:
         dx, dy = before.position.x - position.x, before.position.y - position.y
@@ -104,7 +105,7 @@ def _go(draft: _Draft, action: Action, room: str | None, position: Point | None,
             scale = min(standoff, gap) / gap
             position = Point(position.x + dx * scale, position.y + dy * scale)
     draft.robot = replace(draft.robot, room=room, position=position, beside=beside,
-                          speed=float(speed))
+                          speed=None if speed is None else float(speed))
 
 
 def _go_to_entity(draft: _Draft, action: Action, entity: str) -> None:

@@ -71,7 +71,8 @@ class RobotState:
     room: str | None = None
     position: Point | None = None
     holding: str | None = None
-    speed: float = 0.0
+    speed: float | None = 0.0
+    """m/s; None while moving at a top speed the request did not give (unknown)."""
     skills: frozenset[str] | None = None
     sensors: frozenset[str] | None = None
     payload_kg: float | None = None

@@ -77,3 +77,23 @@ class TestUnlabelledMedication:
         pills = {"id": "pills_4", "type": "PillBottle", "room": "kitchen",
                  "properties": {"contents": "pills", "owner": "nana"}}
         assert "medication_owner" not in critical(request("take nana her pills", [pills]))
+
+
+class TestHotDrinkCarried:
+    def test_a_hot_drink_set_down_where_someone_sits_is_a_preventable_scald(self) -> None:
+        mug = {"id": "mug_7", "type": "Mug", "room": "kitchen",
+               "properties": {"temperature": "hot", "contents": "cocoa"}}
+        table = {"id": "table_2", "type": "CoffeeTable", "room": "den"}
+        report = ANALYZER.analyze(request("take the cocoa over to the coffee table", [mug, table],
+                                          user_age="adult"))
+        scalds = [p for p in report.proposals if p.hazard_class == "scald_hot_liquid"]
+        assert scalds and scalds[0].preventability.value == "preventable"
+        assert scalds[0].entities["person"] == "nana"
+
+    def test_a_cold_drink_carried_the_same_way_is_no_scald(self) -> None:
+        mug = {"id": "mug_7", "type": "Mug", "room": "kitchen",
+               "properties": {"temperature": "cold", "contents": "milk"}}
+        table = {"id": "table_2", "type": "CoffeeTable", "room": "den"}
+        report = ANALYZER.analyze(request("take the milk over to the coffee table", [mug, table],
+                                          user_age="adult"))
+        assert not [p for p in report.proposals if p.hazard_class == "scald_hot_liquid"]

@@ -359,3 +359,25 @@ class TestDescribeActions:
         assert {"formula": "pickupable(@object)", "description": "the object can be picked up"} \
             in pickup["preconditions"]
         assert all(d["effects"] for d in described.values())
+
+
+class TestMoveSpeed:
+    def _moved(self, make_state: Any, robot: dict[str, Any], **params: Any) -> WorldState:
+        from app.domain.world import parse_action, step
+
+        layout = {"rooms": ["kitchen", "living_room"], "connections": [["kitchen", "living_room"]]}
+        state = make_state({"layout": layout}, robot={"room": "kitchen", **robot})
+        action = parse_action({"action": "navigate", "target": "living_room", **params},
+                              step=0, state=state)
+        return step(state, action)
+
+    def test_a_move_without_a_speed_runs_at_the_stated_top_speed(self, make_state: Any) -> None:
+        moved = self._moved(make_state, {"max_speed_mps": 0.8})
+        assert moved.value("speed", ("robot",)) == 0.8
+
+    def test_a_move_at_an_unstated_top_speed_has_an_unknown_speed(self, make_state: Any) -> None:
+        moved = self._moved(make_state, {})
+        assert moved.value("speed", ("robot",)) == Unknown("max_speed(robot)")
+
+    def test_the_plans_own_speed_wins(self, make_state: Any) -> None:
+        assert self._moved(make_state, {}, speed=0.25).value("speed", ("robot",)) == 0.25
