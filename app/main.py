@@ -15,6 +15,7 @@ from fastapi import Depends, FastAPI
 
 from app.api import observability, problems
 from app.api.deps import require_key_when_locked, robot_writes
+from app.api.limits import json_body_within_limits
 from app.api.routes import (
     contracts,
     curator,
@@ -58,8 +59,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="0.1.0",
         summary="Pre-execution safety gate and Task Safety Contracts for LLM-controlled robots",
         lifespan=lifespan,
-        # With SAFEGATE_AUTH=keys, every route (websockets too) needs a valid key.
-        dependencies=[Depends(require_key_when_locked)],
+        # With SAFEGATE_AUTH=keys, every route (websockets too) needs a valid key; every JSON
+        # body is checked for depth, numbers and unstorable text before any route sees it.
+        dependencies=[Depends(require_key_when_locked), Depends(json_body_within_limits)],
     )
     app.state.settings = resolved
     problems.install(app)

@@ -59,6 +59,20 @@ def presented_secret(connection: HTTPConnection) -> str | None:
     return None
 
 
+def lookup_pending(connection: HTTPConnection) -> bool:
+    """Whether `authenticate` would query the database: a key was sent and not yet looked up.
+
+    Async callers use it to stay on the event loop for the common cases (no key, or a key
+    already checked on this connection) and go to a worker thread only for the lookup.
+    """
+    if _CACHE_ATTRIBUTE in connection.scope.get("state", {}):
+        return False
+    headers = connection.headers
+    if "authorization" in headers or "x-api-key" in headers:
+        return True
+    return connection.scope.get("type") == "websocket" and "api_key" in connection.query_params
+
+
 def authenticate(connection: HTTPConnection, services: Services) -> ApiKeyRecord | None:
     """The caller's active key (looked up once per connection), or None when none was sent.
 

@@ -15,10 +15,11 @@ dependencies say.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from typing import Annotated
 
 from fastapi import Depends
+from starlette.concurrency import run_in_threadpool
 from starlette.exceptions import WebSocketException
 from starlette.requests import HTTPConnection
 from starlette.status import WS_1008_POLICY_VIOLATION
@@ -30,6 +31,7 @@ from app.api.auth import (
     ROBOT_ROLES,
     authorize,
     is_open_path,
+    lookup_pending,
 )
 from app.domain.errors import SafeGateError
 from app.services import Services
@@ -38,7 +40,7 @@ from app.store.records import ApiKeyRecord, ApiKeyRole
 _READ_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
 
 
-def get_services(connection: HTTPConnection) -> Services:
+async def get_services(connection: HTTPConnection) -> Services:
     services: Services = connection.app.state.services
     return services
 
@@ -46,11 +48,10 @@ def get_services(connection: HTTPConnection) -> Services:
 ServicesDep = Annotated[Services, Depends(get_services)]
 
 
-def _authorize(
+def _authorize_now(
     connection: HTTPConnection,
     services: Services,
     roles: frozenset[ApiKeyRole],
-    *,
     open_when_open: bool,
 ) -> ApiKeyRecord | None:
     try:
@@ -61,42 +62,65 @@ def _authorize(
         raise
 
 
-def require_role(*roles: ApiKeyRole) -> Callable[[HTTPConnection, Services], ApiKeyRecord]:
+async def _authorize(
+    connection: HTTPConnection,
+    services: Services,
+    roles: frozenset[ApiKeyRole],
+    *,
+    open_when_open: bool,
+) -> ApiKeyRecord | None:
+    # Dependencies are async so the hot path (no key, or one already checked) costs no worker
+    # thread; only a key's first database lookup is sent to one.
+    if lookup_pending(connection):
+        return await run_in_threadpool(
+            _authorize_now, connection, services, roles, open_when_open)
+    return _authorize_now(connection, services, roles, open_when_open)
+
+
+def require_role(
+    *roles: ApiKeyRole,
+) -> Callable[[HTTPConnection, Services], Awaitable[ApiKeyRecord]]:
     """A dependency that always needs a key with one of `roles` (401 without, 403 if wrong)."""
     accepted = frozenset(roles)
 
-    def dependency(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord:
-        key = _authorize(connection, services, accepted, open_when_open=False)
+    async def dependency(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord:
+        key = await _authorize(connection, services, accepted, open_when_open=False)
         assert key is not None  # authorize raises rather than answer None here
         return key
 
     return dependency
 
 
-def allow_open(*roles: ApiKeyRole) -> Callable[[HTTPConnection, Services], ApiKeyRecord | None]:
+def allow_open(
+    *roles: ApiKeyRole,
+) -> Callable[[HTTPConnection, Services], Awaitable[ApiKeyRecord | None]]:
     """A dependency open in `auth=open` mode (None) that needs one of `roles` with `auth=keys`."""
     accepted = frozenset(roles)
 
-    def dependency(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord | None:
-        return _authorize(connection, services, accepted, open_when_open=True)
+    async def dependency(
+        connection: HTTPConnection, services: ServicesDep
+    ) -> ApiKeyRecord | None:
+        return await _authorize(connection, services, accepted, open_when_open=True)
 
     return dependency
 
 
-def require_key_when_locked(connection: HTTPConnection, services: ServicesDep) -> None:
+async def require_key_when_locked(connection: HTTPConnection, services: ServicesDep) -> None:
     """App-wide: with `auth=keys` every route but the probes and the page shell needs a key."""
     if not is_open_path(connection.url.path):
-        _authorize(connection, services, ANY_ROLE, open_when_open=True)
+        await _authorize(connection, services, ANY_ROLE, open_when_open=True)
 
 
-def robot_writes(connection: HTTPConnection, services: ServicesDep) -> ApiKeyRecord | None:
+async def robot_writes(
+    connection: HTTPConnection, services: ServicesDep
+) -> ApiKeyRecord | None:
     """Router-wide access for robot routers: reads as `ReadAccess`, the rest as `RobotAccess`.
 
     Install with `app.include_router(router, dependencies=[Depends(robot_writes)])`; websocket
     routes of such a router count as robot operations.
     """
     reading = connection.scope.get("method") in _READ_METHODS
-    return _authorize(
+    return await _authorize(
         connection, services, ANY_ROLE if reading else ROBOT_ROLES, open_when_open=True
     )
 

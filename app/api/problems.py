@@ -80,8 +80,23 @@ async def _validation_error(_: Request, exc: Exception) -> JSONResponse:
     )
 
 
+# FastAPI's answer to a body it could not decode at all (not UTF-8, nested past Python's
+# recursion limit, an integer with thousands of digits): invalid input like any other, so 422.
+_UNPARSABLE_BODY = "There was an error parsing the body"
+
+
 async def _http_error(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, StarletteHTTPException)
+    if exc.status_code == 400 and exc.detail == _UNPARSABLE_BODY:
+        return problem(
+            422,
+            "Invalid request",
+            "the body is not decodable JSON (bad encoding, too deeply nested, or a number "
+            "too long)",
+            type_="https://safegate.dev/problems/validation",
+            errors=[{"field": "body", "message": "the body could not be decoded as JSON",
+                     "type": "json_invalid"}],
+        )
     return problem(exc.status_code, str(exc.detail), str(exc.detail))
 
 

@@ -11,12 +11,13 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from app.config import PLAN_STEPS_CAP
 from app.domain.contracts import Contract, ContractCondition
 from app.domain.models import ConditionKind, InitialState
 from app.domain.verify import Undecided, Violation
 from app.services.verification import Verified
 
-MAX_PLAN_STEPS = 1000
+MAX_PLAN_STEPS = PLAN_STEPS_CAP
 MAX_INLINE_CONDITIONS = 500
 
 

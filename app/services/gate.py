@@ -2,6 +2,8 @@
 
 In: a validated `GateRequest` (or answers to an earlier one). Out: `Decided`: the stored audit
 record plus the in-memory pipeline result the response is built from.
+The analyzer reads the command canonicalized (`text_hygiene.for_analysis`: look-alike and
+invisible characters read as a person reads them); the audit trail keeps it as sent.
 Every decision is written (with its contract, if any) before it is returned; a failed write raises
 `Unavailable` and the caller gets 503, never an unrecorded decision.
 """
@@ -19,6 +21,7 @@ from app.domain.gate import Decision
 from app.domain.models import GateRequest
 from app.domain.pipeline import GateResult, run_gate
 from app.services.container import Services
+from app.services.text_hygiene import for_analysis
 from app.store.records import ContractRecord, GateRecord
 
 
@@ -33,7 +36,7 @@ def decide(
 ) -> Decided:
     """Run Stages 1-4 on a request and record it (and its contract) in the audit trail."""
     result = run_gate(
-        request,
+        for_analysis(request),
         templates=services.templates.index(),
         analyzer=services.analyzer,
         policy=services.policy,

@@ -44,7 +44,12 @@ from app.domain.monitor import (
 )
 from app.domain.world import WorldState, state_from_request
 from app.services.container import Services
-from app.services.monitoring_sessions import LiveSession, Subscriber, replayable
+from app.services.monitoring_sessions import (
+    UNDECODABLE,
+    LiveSession,
+    Subscriber,
+    replayable,
+)
 from app.store.records import ContractStatus, MonitorSessionRecord
 
 FLUSH_SECONDS = 0.25
@@ -197,9 +202,15 @@ class MonitorService:
             message: object = decode_message(raw)
         except InvalidInput:
             message = raw if raw is not None else b""
+        except RecursionError:
+            # Nested past the JSON decoder's reach: give the monitor something it refuses
+            # (an error, or "halted"), never the text to decode again.
+            message = {UNDECODABLE: "the message is nested too deeply to decode"}
         verdict = live.monitor.step(message)
         live.record(message, verdict)
         if verdict.type == "violation":
+            if verdict.violation is not None:
+                self._services.metrics.monitor_halts.labels(verdict.violation.kind).inc()
             live.halt_saved = False
             await self._save_halt(live)
         event = live.event_for(verdict)

@@ -16,6 +16,7 @@ from app.domain.monitor import Monitor, Verdict
 
 SUBSCRIBER_QUEUE = 1024
 MAX_LOGGED_TEXT = 500
+UNDECODABLE = "undecodable"
 
 
 class Subscriber:
@@ -64,7 +65,7 @@ class LiveSession:
         else:
             text = message.decode("utf-8", "replace") if isinstance(message, bytes) else str(
                 message)
-            logged = {"undecodable": text[:MAX_LOGGED_TEXT]}
+            logged = {UNDECODABLE: text[:MAX_LOGGED_TEXT]}
         entry: dict[str, Any] = {"in": logged, "out": verdict.type}
         if verdict.detail is not None and verdict.type == "error":
             entry["detail"] = verdict.detail

@@ -79,6 +79,7 @@ def verify(
                                field="body.initial_state")
         started = time.perf_counter()
         result = verify_plan(plan, contract, initial_state, timeout_ms=timeout_ms)
+        _count(services, result)
         return Verified(result, None, 0, None, None, False, _since(started))
     assert contract_id is not None
     repository = services.repository
@@ -95,6 +96,7 @@ def verify(
     result = verify_plan(plan, Contract.model_validate(stored.contract), start,
                          timeout_ms=timeout_ms)
     duration_ms = _since(started)
+    _count(services, result)
     if not result.ok:
         stored = repository.use_verification_attempt(contract_id)
     repository.save_verification_attempt(VerificationAttemptRecord(
@@ -122,6 +124,18 @@ def _violation_json(item: Violation | Undecided) -> dict[str, Any]:
     body: dict[str, Any] = asdict(item)
     body["kind"] = item.kind.value
     return body
+
+
+def outcome_of(result: VerificationResult) -> str:
+    """The verification's outcome as counted in metrics: `ok`, `violation` or `undecided`
+    (failed only because the solver could not decide some check)."""
+    if result.ok:
+        return "ok"
+    return "violation" if result.violations else "undecided"
+
+
+def _count(services: Services, result: VerificationResult) -> None:
+    services.metrics.verifications.labels(outcome_of(result)).inc()
 
 
 def _since(started: float) -> float:

@@ -8,7 +8,8 @@ action's guards in the state before it, the aborts and the invariants in the sta
 already derived, as the formula benchmark measures them); the worst case evaluates every guard.
 "step" adds the rest of `Monitor.step` for a `before` and an `after` message given as dicts
 (parsing the message and the action, the action model's predicted next state, the verdicts).
-"step + delta" also applies a one-object observation in each message, and "step + delta, JSON" decodes the messages from text.
+"step + delta" also applies a one-object observation in each message, and "step + delta, JSON"
+decodes the messages from text.
 """
 
 from __future__ import annotations

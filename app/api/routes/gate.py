@@ -1,23 +1,44 @@
-"""POST /gate and the audit trail: a command in, a decision with its reasons out."""
+"""POST /gate and the audit trail: a command in, a decision with its reasons out.
+
+The decide routes are async and do all their blocking work (the pipeline, the audit write, the
+response's JSON) in one worker-thread hop; they answer with the JSON `GateResponse` already
+encoded, so FastAPI does not validate and serialize it a second time.
+"""
 
 from __future__ import annotations
 
 from typing import Any
 
-from fastapi import APIRouter, Body
+from fastapi import APIRouter, Body, Response
+from starlette.concurrency import run_in_threadpool
 
 from app.api.deps import ServicesDep
+from app.api.limits import check_gate_request
 from app.api.schemas import GateResponse, gate_response
 from app.domain.models import GateRequest
-from app.services import gate
+from app.services import Services, gate
+from app.services.gate import Decided
 
 router = APIRouter(tags=["gate"])
 
 
+def _json(decided: Decided) -> Response:
+    return Response(gate_response(decided).model_dump_json(), media_type="application/json")
+
+
+def _decide(services: Services, request: GateRequest) -> Response:
+    check_gate_request(request, services.settings)
+    return _json(gate.decide(services, request))
+
+
+def _answer(services: Services, request_id: str, answers: dict[str, Any]) -> Response:
+    return _json(gate.answer(services, request_id, answers))
+
+
 @router.post("/gate", response_model=GateResponse)
-def post_gate(request: GateRequest, services: ServicesDep) -> GateResponse:
+async def post_gate(request: GateRequest, services: ServicesDep) -> Response:
     """Decide a command: authorize (with a contract), defer (with a question) or reject."""
-    return gate_response(gate.decide(services, request))
+    return await run_in_threadpool(_decide, services, request)
 
 
 @router.get("/gate/{request_id}")
@@ -27,12 +48,12 @@ def get_gate(request_id: str, services: ServicesDep) -> dict[str, Any]:
 
 
 @router.post("/gate/{request_id}/answers", response_model=GateResponse)
-def post_answers(
+async def post_answers(
     request_id: str,
     services: ServicesDep,
     answers: dict[str, Any] = Body(  # noqa: B008 - FastAPI's way to declare a body
         ..., examples=[{"age_group": "adult"}, {"contents": "water"}]
     ),
-) -> GateResponse:
+) -> Response:
     """Answer the clarifying question; the pipeline runs again and links to the original."""
-    return gate_response(gate.answer(services, request_id, answers))
+    return await run_in_threadpool(_answer, services, request_id, answers)

@@ -20,7 +20,8 @@ from pydantic import BaseModel, ConfigDict, Field
 from starlette.requests import HTTPConnection
 
 from app.api.auth import ANY_ROLE, ROBOT_ROLES, authorize_websocket
-from app.api.deps import ReadAccess, RobotAccess
+from app.api.deps import ReadAccess, RobotAccess, ServicesDep
+from app.api.limits import check_initial_state
 from app.domain.errors import NotFound, SafeGateError
 from app.domain.models import InitialState
 from app.services.monitoring import MonitorService
@@ -96,9 +97,10 @@ class MonitorSummaryResponse(BaseModel):
 
 @router.post("/monitor", response_model=MonitorOpenResponse,
              status_code=status.HTTP_201_CREATED)
-def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep,
+def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep, services: ServicesDep,
                  _: RobotAccess) -> MonitorOpenResponse:
     """Open a session; the initial state defaults to the gate request's scene and robot."""
+    check_initial_state(body.initial_state, services.settings)
     record = monitoring.open_session(body.contract_id, body.initial_state)
     assert record.id is not None
     return MonitorOpenResponse(session_id=record.id, contract_id=record.contract_id,

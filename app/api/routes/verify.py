@@ -5,6 +5,7 @@ from __future__ import annotations
 from fastapi import APIRouter
 
 from app.api.deps import ServicesDep
+from app.api.limits import check_initial_state, check_plan
 from app.api.verify_schemas import VerifyRequest, VerifyResponse, verify_response
 from app.services import verification
 
@@ -18,6 +19,8 @@ def post_verify(request: VerifyRequest, services: ServicesDep) -> VerifyResponse
     A failed verification spends one of the contract's attempts; the last one downgrades the
     gate decision to reject, and later calls are refused (409 AttemptsExhausted).
     """
+    check_plan(request.plan, services.settings)
+    check_initial_state(request.initial_state, services.settings)
     verified = verification.verify(
         services,
         request.plan,

@@ -1,0 +1,157 @@
+"""Input limits at the edge: the shape of every JSON body, and the sizes the settings allow.
+
+In: the JSON body of any POST/PUT/PATCH request (`json_body_within_limits`, installed app-wide
+by `create_app`, runs after the body parsed and before the route's own validation), and the
+validated gate requests, initial states and plans (`check_gate_request`, `check_initial_state`,
+`check_plan`, called by the robot routes).
+Out: nothing when the input is within limits.
+Limits: JSON nesting at most `max_json_depth` deep; every number finite and within
+`MAX_JSON_NUMBER` of zero (NaN, Infinity and 400-digit integers would otherwise reach float
+arithmetic, the solver or a JSONB column); no string (value or key) holding a NUL character or
+a lone UTF-16 surrogate (PostgreSQL cannot store either); a command of at most
+`max_command_chars` characters; at most `max_scene_entities` items in each scene list (objects,
+people, relations, rooms, connections, obstacles); at most `max_plan_steps` plan steps. The
+models' own caps (`MAX_COMMAND_CHARS`, `MAX_ENTITIES`, `MAX_PLAN_STEPS`) bound what a setting
+can allow. The body's size is the middleware's business (413, `app/api/observability.py`).
+Fails: `InvalidInput` naming the offending field (e.g. `body.scene.objects.3.properties.mass_kg`),
+which `app/api/problems.py` answers as a 422 problem+json.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections.abc import Sequence
+
+from starlette.requests import HTTPConnection, Request
+
+from app.config import Settings
+from app.domain.errors import InvalidInput
+from app.domain.models import GateRequest, InitialState, Scene
+
+MAX_JSON_NUMBER = 1e15
+_WRITE_METHODS = frozenset({"POST", "PUT", "PATCH"})
+_UNSTORABLE_CHARACTERS = re.compile("[\x00\ud800-\udfff]")
+_SCENE_LISTS = ("objects", "people", "relations")
+_LAYOUT_LISTS = ("rooms", "connections", "obstacles")
+
+PathPart = str | int
+
+
+def _field(path: Sequence[PathPart]) -> str:
+    return ".".join(str(part) for part in path)
+
+
+def _check_text(text: str, path: Sequence[PathPart], what: str) -> None:
+    if _UNSTORABLE_CHARACTERS.search(text):
+        raise InvalidInput(
+            f"{what} holds a NUL character or a lone UTF-16 surrogate", field=_field(path))
+
+
+def _check_number(number: float, path: Sequence[PathPart]) -> None:
+    if isinstance(number, float) and not math.isfinite(number):
+        raise InvalidInput("numbers must be finite (no NaN or Infinity)", field=_field(path))
+    if abs(number) > MAX_JSON_NUMBER:
+        raise InvalidInput(f"numbers must lie within ±{MAX_JSON_NUMBER:.0e}",
+                           field=_field(path), limit=MAX_JSON_NUMBER)
+
+
+def check_json_value(value: object, *, max_depth: int, root: str = "body") -> None:
+    """Check a decoded JSON value against the shape limits (iteratively: no recursion limit).
+
+    Args:
+        value: what `json.loads` returned.
+        max_depth: the deepest nesting of arrays and objects allowed (the root counts as 1).
+        root: the name of the value's place, first in every reported field path.
+
+    Raises:
+        InvalidInput: nesting too deep, a non-finite or huge number, or an unstorable string.
+    """
+    pending: list[tuple[object, tuple[PathPart, ...], int]] = [(value, (root,), 1)]
+    while pending:
+        item, path, depth = pending.pop()
+        if isinstance(item, dict | list) and depth > max_depth:
+            raise InvalidInput(f"JSON nested deeper than {max_depth} levels",
+                               field=_field(path), limit=max_depth)
+        if isinstance(item, dict):
+            for key, child in item.items():
+                _check_text(key, (*path, key), "a key")
+                pending.append((child, (*path, key), depth + 1))
+        elif isinstance(item, list):
+            pending.extend((child, (*path, index), depth + 1) for index, child in enumerate(item))
+        elif isinstance(item, str):
+            _check_text(item, path, "a string")
+        elif isinstance(item, int | float) and not isinstance(item, bool):
+            _check_number(item, path)
+
+
+async def json_body_within_limits(connection: HTTPConnection) -> None:
+    """App-wide dependency: refuse a JSON body whose shape is out of limits (422).
+
+    Bodies that are not JSON are left to the route (which answers 422 for them too).
+    """
+    if not isinstance(connection, Request) or connection.method not in _WRITE_METHODS:
+        return
+    content_type = connection.headers.get("content-type", "application/json")
+    if "json" not in content_type:
+        return
+    body = await connection.body()
+    if not body:
+        return
+    try:
+        value = json.loads(body)
+    except (ValueError, RecursionError):
+        return  # FastAPI has already refused what it could not parse; nothing to add
+    settings: Settings = connection.app.state.settings
+    check_json_value(value, max_depth=settings.max_json_depth)
+
+
+def _check_scene(scene: Scene | None, settings: Settings, prefix: str) -> None:
+    if scene is None:
+        return
+    limit = settings.max_scene_entities
+    lists: list[tuple[str, Sequence[object]]] = [
+        (f"{prefix}.{name}", getattr(scene, name)) for name in _SCENE_LISTS]
+    if scene.layout is not None:
+        lists += [(f"{prefix}.layout.{name}", getattr(scene.layout, name))
+                  for name in _LAYOUT_LISTS]
+    for field, items in lists:
+        if len(items) > limit:
+            raise InvalidInput(f"{field} has {len(items)} items; at most {limit} are allowed",
+                               field=field, limit=limit)
+
+
+def check_gate_request(request: GateRequest, settings: Settings) -> None:
+    """Check a gate request against the configured command length and scene sizes.
+
+    Raises:
+        InvalidInput: the command or a scene list is longer than the settings allow.
+    """
+    limit = settings.max_command_chars
+    if len(request.command) > limit:
+        raise InvalidInput(f"the command has {len(request.command)} characters; at most "
+                           f"{limit} are allowed", field="body.command", limit=limit)
+    _check_scene(request.scene, settings, "body.scene")
+
+
+def check_initial_state(state: InitialState | None, settings: Settings) -> None:
+    """Check an initial state's scene against the configured scene sizes.
+
+    Raises:
+        InvalidInput: a scene list is longer than the settings allow.
+    """
+    if state is not None:
+        _check_scene(state.scene, settings, "body.initial_state.scene")
+
+
+def check_plan(plan: Sequence[object], settings: Settings) -> None:
+    """Check a plan against the configured plan length.
+
+    Raises:
+        InvalidInput: the plan has more steps than the settings allow.
+    """
+    limit = settings.max_plan_steps
+    if len(plan) > limit:
+        raise InvalidInput(f"the plan has {len(plan)} steps; at most {limit} are allowed",
+                           field="body.plan", limit=limit)
