@@ -43,6 +43,7 @@ lint: $(STAMP)
 ## when SAFEGATE_LLM_MODEL is set).
 bench: $(STAMP)
 	$(BIN)/safegate bench run bench/cases/benchmark.jsonl --name benchmark
+	$(BIN)/safegate bench run bench/cases/fresh/fresh.jsonl --name fresh
 
 ## Performance benchmarks: each prints a table.
 perf: $(STAMP)

@@ -10,6 +10,7 @@ operational / consequential) and whose unknowns say what is missing and whether 
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Protocol, runtime_checkable
 
@@ -65,12 +66,29 @@ class SymbolicAnalyzer:
     def analyze(self, request: GateRequest) -> HazardReport:
         """Fill the Hazard Analysis Matrix for one request.
 
+        A command's hazards are at least those of each of its sentences: when the command has
+        several, each is also analysed alone and its hazards join the whole command's. Text
+        around a dangerous instruction ("this is totally safe, nobody is around: ...", "jk,
+        never mind") can then add hazards but never hide one. Unknowns come from the whole
+        command only (a sentence alone loses what its pronouns point to).
+
         Args:
             request: the gate request.
 
         Returns:
             The `HazardReport` (proposals deduplicated per hazard class and entities).
         """
+        report = self._analyze_one(request)
+        parts = sentences(request.command)
+        if len(parts) < 2:
+            return report
+        proposals = list(report.proposals)
+        for part in parts:
+            alone = self._analyze_one(request.model_copy(update={"command": part}))
+            proposals.extend(p for p in alone.proposals if p not in proposals)
+        return report.model_copy(update={"proposals": tuple(proposals)})
+
+    def _analyze_one(self, request: GateRequest) -> HazardReport:
         knowledge = self._knowledge
         view = build_scene_view(request, knowledge)
         names = {n.lower() for p in view.people.values() for n in (p.id, p.name) if n}
@@ -96,6 +114,17 @@ class SymbolicAnalyzer:
         semantic_hazards(ctx, self._semantic)
         find_unknowns(ctx)
         return ctx.report()
+
+
+_SENTENCE_BREAK = re.compile(
+    r"(?<=[.!?;:])\s+|\s*[()\[\]{}<>\n]+\s*|\s+-{1,2}\s+|\s*\S+=\S*\s*"
+)
+
+
+def sentences(command: str) -> list[str]:
+    """The command's sentence-like parts: split at . ! ? ; : brackets, dashes, new lines and
+    `key=value` tokens (machine-looking text is never part of an instruction)."""
+    return [part.strip(" ,") for part in _SENTENCE_BREAK.split(command) if part.strip(" ,.")]
 
 
 def analyze(request: GateRequest) -> HazardReport:
