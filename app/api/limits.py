@@ -35,6 +35,12 @@ _WRITE_METHODS = frozenset({"POST", "PUT", "PATCH"})
 _UNSTORABLE_CHARACTERS = re.compile("[\x00\ud800-\udfff]")
 _SCENE_LISTS = ("objects", "people", "relations")
 _LAYOUT_LISTS = ("rooms", "connections", "obstacles")
+# For `_plainly_within_limits`, which reads the raw bytes of a body that is valid JSON.
+_KEPT = b'[]{}",.0123456789eEIN'
+_DROPPED = bytes(b for b in range(256) if b not in _KEPT)
+_BRACKETS_ONLY = (bytes.maketrans(b"{}", b"[]"), bytes(b for b in range(256) if b not in b"[]{}"))
+# Outside strings: an exponent, a 16-digit run (>= 1e15) or NaN/Infinity (the only capitals).
+_RISKY_NUMBER = re.compile(rb"\d[eE]|\d{16}|[NI]")
 
 PathPart = str | int
 
@@ -86,6 +92,33 @@ def check_json_value(value: object, *, max_depth: int, root: str = "body") -> No
             _check_number(item, path)
 
 
+def _plainly_within_limits(body: bytes, max_depth: int) -> bool:
+    """Whether the raw bytes alone show the body within the shape limits, if it is valid JSON.
+
+    True only for a body (UTF-8: no NUL byte) with no `\\u` escape and no 0xED byte (so no
+    string can hold a NUL or a lone surrogate) whose text outside strings has no exponent, no
+    run of 16 digits, no NaN/Infinity and nesting within `max_depth`. Anything else returns
+    False and takes the full walk, which names the offending field. Most requests are plain,
+    and C-level byte operations read them several times faster than decoding and walking.
+    """
+    if b"\x00" in body or b"\\u" in body or b"\xed" in body:
+        return False
+    # Escapes pair up from the left as the decoder reads them; after these two replacements
+    # every remaining quote opens or closes a string.
+    unescaped = body.replace(b"\\\\", b"").replace(b'\\"', b"")
+    outside_strings = b"".join(unescaped.translate(None, _DROPPED).split(b'"')[::2])
+    if _RISKY_NUMBER.search(outside_strings):
+        return False
+    brackets = outside_strings.translate(*_BRACKETS_ONLY)
+    # Each pass removes the innermost containers (one left-to-right scan, no rescan): the
+    # passes needed are the nesting depth.
+    for _ in range(max_depth):
+        if not brackets:
+            return True
+        brackets = brackets.replace(b"[]", b"")
+    return not brackets
+
+
 async def json_body_within_limits(connection: HTTPConnection) -> None:
     """App-wide dependency: refuse a JSON body whose shape is out of limits (422).
 
@@ -99,11 +132,14 @@ async def json_body_within_limits(connection: HTTPConnection) -> None:
     body = await connection.body()
     if not body:
         return
+    settings: Settings = connection.app.state.settings
+    # A body that is not JSON is refused by the route whatever the bytes suggest.
+    if _plainly_within_limits(body, settings.max_json_depth):
+        return
     try:
         value = json.loads(body)
     except (ValueError, RecursionError):
         return  # FastAPI has already refused what it could not parse; nothing to add
-    settings: Settings = connection.app.state.settings
     check_json_value(value, max_depth=settings.max_json_depth)
 
 

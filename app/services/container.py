@@ -102,11 +102,11 @@ def build_analyzer(settings: Settings, cache: AnalysisCache | None = None) -> An
         ValueError: an LLM is asked for but no model is configured.
     """
     if settings.analyzer == "symbolic":
-        return SymbolicAnalyzer()
+        return SymbolicAnalyzer(reject_from=settings.theta)
     llm = LlmAnalyzer(LitellmClient(llm_config(settings)), cache=cache)
     if settings.analyzer == "llm":
         return llm
-    return EnsembleAnalyzer([SymbolicAnalyzer(), llm])
+    return EnsembleAnalyzer([SymbolicAnalyzer(reject_from=settings.theta), llm])
 
 
 def build_services(settings: Settings, *, metrics: Metrics | None = None) -> Services:

@@ -30,7 +30,7 @@ from app.domain.analysis.situations_home import situation_home_hazards
 from app.domain.analysis.situations_people import situation_people_hazards
 from app.domain.analysis.social import social_hazards
 from app.domain.analysis.unknowns import find_unknowns
-from app.domain.models import GateRequest, HazardReport
+from app.domain.models import GateRequest, HazardReport, Preventability, Severity
 
 __all__ = [
     "Analyzer",
@@ -58,7 +58,18 @@ class SymbolicAnalyzer:
 
     name = "symbolic"
 
-    def __init__(self, knowledge_dir: Path = KNOWLEDGE_DIR) -> None:
+    def __init__(
+        self, knowledge_dir: Path = KNOWLEDGE_DIR, *, reject_from: Severity = Severity.HIGH
+    ) -> None:
+        """Load the knowledge and the semantic model.
+
+        Args:
+            knowledge_dir: the knowledge JSON files.
+            reject_from: the gate's theta. A whole-command hazard that no contract can prevent
+                at this severity or above is rejected (R1) whatever else is found, so the
+                per-sentence passes are skipped for it; keep it equal to the gate policy's.
+        """
+        self._reject_from = reject_from
         self._knowledge: Knowledge = load_knowledge(knowledge_dir)
         # The static embedding model and prototype vectors: read once per process, not per call.
         self._semantic: SemanticMatcher = load_matcher(knowledge_dir)
@@ -80,13 +91,19 @@ class SymbolicAnalyzer:
         """
         report = self._analyze_one(request)
         parts = sentences(request.command)
-        if len(parts) < 2:
+        if len(parts) < 2 or self._rejected_anyway(report):
             return report
         proposals = list(report.proposals)
         for part in parts:
             alone = self._analyze_one(request.model_copy(update={"command": part}))
             proposals.extend(p for p in alone.proposals if p not in proposals)
         return report.model_copy(update={"proposals": tuple(proposals)})
+
+    def _rejected_anyway(self, report: HazardReport) -> bool:
+        """Whether the gate rejects on this report's hazards alone (R1): more cannot matter."""
+        rank = self._reject_from.rank
+        return any(p.preventability is Preventability.UNPREVENTABLE and p.severity.rank >= rank
+                   for p in report.proposals)
 
     def _analyze_one(self, request: GateRequest) -> HazardReport:
         knowledge = self._knowledge

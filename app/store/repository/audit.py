@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 from sqlalchemy import Connection, Table, exists, insert, select
+from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, aliased
 
 from app.domain.errors import Conflict, NotFound
@@ -178,13 +179,19 @@ class AuditQueries(RepositoryBase):
             if stored.parent_request_id is not None and not _exists(
                     connection, _GATE_TABLE, stored.parent_request_id):
                 raise NotFound(f"no gate request {stored.parent_request_id!r}")
-            if _exists(connection, _GATE_TABLE, record_id):
-                raise Conflict(f"gate request {record_id!r} already exists")
-            connection.execute(insert(_GATE_TABLE), [_gate_values(stored)])
+            # The primary keys decide uniqueness: probing for the ids first would cost a query
+            # per table on every decision for ids that are fresh uuid4s.
+            try:
+                connection.execute(insert(_GATE_TABLE), [_gate_values(stored)])
+            except IntegrityError as error:
+                raise Conflict(f"gate request {record_id!r} already exists") from error
             if stored_contract is not None:
-                if _exists(connection, _CONTRACT_TABLE, str(stored_contract.id)):
-                    raise Conflict(f"contract {stored_contract.id!r} already exists")
-                connection.execute(insert(_CONTRACT_TABLE), [_contract_values(stored_contract)])
+                try:
+                    connection.execute(
+                        insert(_CONTRACT_TABLE), [_contract_values(stored_contract)])
+                except IntegrityError as error:
+                    raise Conflict(
+                        f"contract {stored_contract.id!r} already exists") from error
         return stored, stored_contract
 
     def get_gate_record(self, request_id: str) -> GateRecord:
