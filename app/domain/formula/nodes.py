@@ -12,147 +12,124 @@ from dataclasses import dataclass, field
 
 
 @dataclass(frozen=True, slots=True)
-class BoolConst:
+class _Node:
+    """Where a node starts in the source text; not part of its identity (equality ignores it)."""
+
+    line: int = field(default=0, compare=False, repr=False, kw_only=True)
+    column: int = field(default=0, compare=False, repr=False, kw_only=True)
+
+
+@dataclass(frozen=True, slots=True)
+class BoolConst(_Node):
     """`true` or `false`."""
 
     value: bool
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class NumberLit:
+class NumberLit(_Node):
     """A number literal (always a float; a leading minus is folded in)."""
 
     value: float
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class StringLit:
+class StringLit(_Node):
     """A double-quoted string literal such as `"bleach"`."""
 
     value: str
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class VarRef:
+class VarRef(_Node):
     """A template variable `$name` (stored without the dollar)."""
 
     name: str
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class ActionArg:
+class ActionArg(_Node):
     """A guarded action's argument, `@object` or `@target` (stored without the at sign)."""
 
     name: str
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class RobotConst:
+class RobotConst(_Node):
     """The constant `robot`: the robot being gated (entity id `robot`)."""
 
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
-
 
 @dataclass(frozen=True, slots=True)
-class EntityRef:
+class EntityRef(_Node):
     """An entity constant, `#mug_1` or `#"Mug|+01.2"`; also a binding value for `substitute`."""
 
     id: str
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class BoundVar:
+class BoundVar(_Node):
     """A bare identifier: a variable bound by an enclosing quantifier."""
 
     name: str
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Apply:
+class Apply(_Node):
     """A vocabulary predicate or function applied to arguments, `near(robot, $person)`."""
 
     name: str
     args: tuple[Formula, ...]
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Not:
+class Not(_Node):
     """Logical negation."""
 
     operand: Formula
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Neg:
+class Neg(_Node):
     """Arithmetic negation of a non-literal (a literal's minus is folded into the literal)."""
 
     operand: Formula
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Logic:
+class Logic(_Node):
     """A binary connective: `op` is one of `and`, `or`, `->`, `<->`."""
 
     op: str
     left: Formula
     right: Formula
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Compare:
+class Compare(_Node):
     """A comparison: `op` is one of `==`, `!=`, `<`, `<=`, `>`, `>=`."""
 
     op: str
     left: Formula
     right: Formula
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Arith:
+class Arith(_Node):
     """Arithmetic over numbers: `op` is one of `+`, `-`, `*`, `/`."""
 
     op: str
     left: Formula
     right: Formula
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 @dataclass(frozen=True, slots=True)
-class Quantifier:
+class Quantifier(_Node):
     """`forall var: type . body` or `exists var: type . body` over a finite typed domain."""
 
     kind: str
     var: str
     type: str
     body: Formula
-    line: int = field(default=0, compare=False, repr=False, kw_only=True)
-    column: int = field(default=0, compare=False, repr=False, kw_only=True)
 
 
 Formula = (
