@@ -58,10 +58,6 @@ class GateResponse(BaseModel):
     suggested_templates: list[dict[str, Any]] = Field(default_factory=list)
 
 
-def _hazard_key(proposal: HazardProposal) -> str:
-    return f"{proposal.hazard_class}:{sorted(proposal.entities.items())}"
-
-
 def hazards_out(binding: BindingResult) -> list[HazardOut]:
     out: list[HazardOut] = []
     for bound in binding.bound:
