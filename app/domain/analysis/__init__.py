@@ -23,8 +23,13 @@ from app.domain.analysis.handling import handling_hazards
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge, load_knowledge
 from app.domain.analysis.operational import operational_hazards
 from app.domain.analysis.questions import apply_answers, phrase_question, question_for
-from app.domain.analysis.scene_view import build_scene_view
-from app.domain.analysis.semantic import SemanticMatcher, load_matcher, semantic_hazards
+from app.domain.analysis.scene_view import SceneView, build_scene_view
+from app.domain.analysis.semantic import (
+    Match,
+    SemanticMatcher,
+    load_matcher,
+    semantic_hazards,
+)
 from app.domain.analysis.situations_aftermath import aftermath_hazards
 from app.domain.analysis.situations_home import situation_home_hazards
 from app.domain.analysis.situations_people import situation_people_hazards
@@ -89,13 +94,16 @@ class SymbolicAnalyzer:
         Returns:
             The `HazardReport` (proposals deduplicated per hazard class and entities).
         """
-        report = self._analyze_one(request)
+        view = build_scene_view(request, self._knowledge)
+        memo: dict[str, Match] = {}
+        report = self._analyze_one(request, view.for_pass(), memo)
         parts = sentences(request.command)
         if len(parts) < 2 or self._rejected_anyway(report):
             return report
         proposals = list(report.proposals)
         for part in parts:
-            alone = self._analyze_one(request.model_copy(update={"command": part}))
+            alone = self._analyze_one(request.model_copy(update={"command": part}),
+                                      view.for_pass(), memo, with_unknowns=False)
             proposals.extend(p for p in alone.proposals if p not in proposals)
         return report.model_copy(update={"proposals": tuple(proposals)})
 
@@ -105,9 +113,10 @@ class SymbolicAnalyzer:
         return any(p.preventability is Preventability.UNPREVENTABLE and p.severity.rank >= rank
                    for p in report.proposals)
 
-    def _analyze_one(self, request: GateRequest) -> HazardReport:
+    def _analyze_one(self, request: GateRequest, view: SceneView, memo: dict[str, Match], *,
+                     with_unknowns: bool = True) -> HazardReport:
+        """One pass over one command text (a sentence pass needs no unknowns: see `analyze`)."""
         knowledge = self._knowledge
-        view = build_scene_view(request, knowledge)
         names = {n.lower() for p in view.people.values() for n in (p.id, p.name) if n}
         names |= {n.lower() for o in view.objects.values() for n in (o.id, o.name) if n}
         parsed = read_command(request.command, knowledge, names)
@@ -128,8 +137,9 @@ class SymbolicAnalyzer:
         situation_people_hazards(ctx)
         situation_home_hazards(ctx)
         aftermath_hazards(ctx)
-        semantic_hazards(ctx, self._semantic)
-        find_unknowns(ctx)
+        semantic_hazards(ctx, self._semantic, memo)
+        if with_unknowns:
+            find_unknowns(ctx)
         return ctx.report()
 
 

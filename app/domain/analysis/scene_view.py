@@ -10,7 +10,7 @@ Never fails on a valid request; anything not given stays None (unknown), never a
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from typing import Any
 
@@ -151,6 +151,18 @@ class SceneView:
 
     def children(self) -> list[PersonView]:
         return [p for p in self.people.values() if p.child]
+
+    def for_pass(self) -> SceneView:
+        """A copy one analysis pass may change (grounding adds made-up people and objects, and
+        state clauses update people), sharing the object views, which no pass changes."""
+        people = {person_id: replace(person) for person_id, person in self.people.items()}
+        user = self.user
+        if user is not None:
+            user = people[user.id] if self.people.get(user.id) is user else replace(user)
+        return SceneView(
+            objects=dict(self.objects), people=people, rooms=list(self.rooms),
+            connections=list(self.connections), scene_given=self.scene_given,
+            people_known=self.people_known, user=user, robot_room=self.robot_room)
 
 
 def object_view(obj: SceneObject, knowledge: Knowledge) -> ObjectView:

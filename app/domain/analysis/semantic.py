@@ -26,8 +26,6 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from app.domain.analysis.context import Context
 from app.domain.analysis.embeddings import EMBEDDINGS_DIR, PhraseEncoder, Vectors, load_encoder
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
@@ -95,29 +93,37 @@ class SemanticMatcher:
         self._unsafe_count = len(self._family_of)
         self._vectors: Vectors = encoder.encode(self._texts)
 
-    def nearest(self, texts: list[str]) -> list[Match]:
+    def nearest(self, texts: list[str], memo: dict[str, Match] | None = None) -> list[Match]:
         """The nearest unsafe prototype of each text, with the nearest benign similarity.
 
         Args:
             texts: normalised clauses or commands.
+            memo: matches already computed for this request (its sentence passes repeat the
+                whole command's clauses); new ones are added to it.
 
         Returns:
             One `Match` per text, in order.
         """
-        if not texts or not self._unsafe_count:
+        if not self._unsafe_count:
             return []
-        # One small matrix-vector product per text: a single matrix product here is large
-        # enough for OpenBLAS to wake its thread pool, which spins on the other cores and
-        # costs more CPU than the product itself.
-        similarities = np.stack([self._vectors @ row for row in self.encoder.encode(texts)])
-        unsafe = similarities[:, :self._unsafe_count]
-        best = unsafe.argmax(axis=1)
-        benign = (similarities[:, self._unsafe_count:].max(axis=1)
-                  if similarities.shape[1] > self._unsafe_count else np.full(len(texts), -1.0))
-        return [Match(text=text, family=self.families[self._family_of[int(b)]],
-                      prototype=self._texts[int(b)], similarity=float(unsafe[row, b]),
-                      benign_similarity=float(benign[row]))
-                for row, (text, b) in enumerate(zip(texts, best, strict=True))]
+        memo = {} if memo is None else memo
+        for text in texts:
+            if text not in memo:
+                memo[text] = self._match(text)
+        return [memo[text] for text in texts]
+
+    def _match(self, text: str) -> Match:
+        # One matrix-vector product per text: a matrix product over several texts is large
+        # enough for OpenBLAS to wake its thread pool, which spins on the other cores and costs
+        # more CPU than the product itself.
+        similarities = self._vectors @ self.encoder.encode([text])[0]
+        unsafe = similarities[:self._unsafe_count]
+        best = int(unsafe.argmax())
+        benign = (float(similarities[self._unsafe_count:].max())
+                  if len(similarities) > self._unsafe_count else -1.0)
+        return Match(text=text, family=self.families[self._family_of[best]],
+                     prototype=self._texts[best], similarity=float(unsafe[best]),
+                     benign_similarity=benign)
 
 
 @cache
@@ -154,19 +160,21 @@ def load_matcher(knowledge_dir: Path = KNOWLEDGE_DIR,
         moderate=float(limits["moderate"]), margin=float(limits["margin"])))
 
 
-def semantic_hazards(ctx: Context, matcher: SemanticMatcher) -> None:
+def semantic_hazards(ctx: Context, matcher: SemanticMatcher,
+                     memo: dict[str, Match] | None = None) -> None:
     """Add the hazards (or critical unknowns) of situations the command resembles.
 
     Args:
         ctx: the analysis context (proposals and unknowns are appended to it).
         matcher: the analyzer's matcher.
+        memo: the request's matches so far (see `SemanticMatcher.nearest`).
     """
     texts = [step.step.text for step in ctx.steps if not step.step.negated and step.step.text]
     if not any(step.step.negated for step in ctx.steps) and ctx.text not in texts:
         texts.append(ctx.text)
     limits = matcher.thresholds
     seen: set[str] = set()
-    for match in matcher.nearest(list(dict.fromkeys(texts))):
+    for match in matcher.nearest(list(dict.fromkeys(texts)), memo):
         if match.margin < limits.margin or match.similarity < limits.moderate:
             continue
         if match.family.name in seen:

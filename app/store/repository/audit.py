@@ -174,8 +174,7 @@ class AuditQueries(RepositoryBase):
             "created_at": created_at,
             "contract_id": stored_contract.id if stored_contract else record.contract_id,
         })
-        with self._transaction("saving a gate decision") as session:
-            connection = session.connection()
+        with self._core_transaction("saving a gate decision") as connection:
             if stored.parent_request_id is not None and not _exists(
                     connection, _GATE_TABLE, stored.parent_request_id):
                 raise NotFound(f"no gate request {stored.parent_request_id!r}")
