@@ -16,6 +16,7 @@ from typing import Any
 
 from alembic import command
 from alembic.config import Config
+from pydantic_core import to_json
 from sqlalchemy import Connection, Engine, create_engine, event, make_url
 from sqlalchemy.engine import URL
 from sqlalchemy.exc import SQLAlchemyError
@@ -51,6 +52,7 @@ def create_engine_for(url: str, **engine_options: Any) -> Engine:
         A new engine; dispose of it when done.
     """
     parsed = make_url(url)
+    engine_options = {"json_serializer": _json_text, **engine_options}
     if parsed.get_backend_name() == "sqlite":
         return _create_sqlite_engine(parsed, engine_options)
     options: dict[str, Any] = {"pool_pre_ping": True}
@@ -58,6 +60,12 @@ def create_engine_for(url: str, **engine_options: Any) -> Engine:
         options["connect_args"] = {"connect_timeout": POSTGRES_CONNECT_TIMEOUT_SECONDS}
     options.update(engine_options)
     return create_engine(parsed, **options)
+
+
+def _json_text(value: Any) -> str:
+    """JSON columns' encoder: pydantic-core's (compiled), several times the standard library's
+    speed on the audit trail's large documents."""
+    return to_json(value).decode()
 
 
 def _create_sqlite_engine(url: URL, engine_options: dict[str, Any]) -> Engine:

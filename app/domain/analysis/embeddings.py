@@ -11,7 +11,7 @@ nothing is ever fetched from a hub. Fails: `FileNotFoundError` if the folder has
 from __future__ import annotations
 
 from collections.abc import Sequence
-from functools import cache
+from functools import cache, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -27,9 +27,11 @@ Vectors = npt.NDArray[np.float32]
 class PhraseEncoder:
     """Turns short texts into unit vectors with a static (one vector per word-piece) model.
 
-    A text's vector is the mean of its word-pieces' vectors, as model2vec computes it; texts are
-    tokenised one by one because the tokenizer's parallel batch call costs more in thread
-    start-up than it saves on a handful of short clauses.
+    A text's vector is the mean of its word-pieces' vectors, as model2vec computes it. The
+    model's BERT tokenizer never joins pieces across white space, so a text's pieces are its
+    words' pieces in order: words are tokenised one at a time and remembered (a bounded cache of
+    vocabulary, shared by all requests), which saves the tokenizer's ~25 us per call on every
+    clause of every request.
     """
 
     def __init__(self, model: Any) -> None:
@@ -40,6 +42,11 @@ class PhraseEncoder:
         # Per-token means are exact only without a vocabulary mapping or token weights.
         self._direct = model.token_mapping is None and model.weights is None
         self._table: Vectors = np.asarray(model.embedding, dtype=np.float32)
+        self._word_pieces = lru_cache(maxsize=32768)(self._pieces_of)
+
+    def _pieces_of(self, word: str) -> tuple[int, ...]:
+        return tuple(i for i in self._tokenizer.encode(word, add_special_tokens=False).ids
+                     if i != self._unknown)
 
     def encode(self, texts: Sequence[str]) -> Vectors:
         """Embed texts as unit-length rows (a text with no known word-piece gives a zero row).
@@ -55,8 +62,7 @@ class PhraseEncoder:
         if self._direct:
             raw = np.zeros((len(texts), self.dim), dtype=np.float32)
             for row, text in enumerate(texts):
-                ids = [i for i in self._tokenizer.encode(text, add_special_tokens=False).ids
-                       if i != self._unknown]
+                ids = [i for word in text.split() for i in self._word_pieces(word)]
                 if ids:
                     raw[row] = self._table[ids].mean(axis=0)
         else:
