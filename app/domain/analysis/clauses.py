@@ -30,7 +30,10 @@ LEADING_FILLER = ("please", "robot", "hey", "ok", "okay", "now", "then", "also",
                   "remember to", "try to", "you should", "you can", "then please", "but",
                   "right", "quickly", "quick", "kindly", "be a dear and", "be a love and",
                   "do me a favour and", "do me a favor and", "i'd like you to", "you need to",
-                  "you must", "you'll need to", "you have to", "we need you to", "help me")
+                  "you must", "you'll need to", "you have to", "we need you to", "help me",
+                  "excuse me", "oi", "yo", "hiya", "sorry", "pls", "plz", "would you mind",
+                  "could you maybe", "can you maybe", "would you maybe", "maybe", "mate",
+                  "if you could", "if you can", "if you would", "do us a favour and")
 NEGATIONS = ("don't", "do not", "dont", "never", "no need to", "do n't", "stop to")
 CONDITIONS = ("if", "when", "once", "unless", "while", "whenever", "in case", "as soon as",
               "before", "after", "until", "since", "because", "so that", "so")
@@ -49,9 +52,16 @@ _AFTER_PARTICLE = frozenset({"and", ",", "for", "so", "until", "while", "before"
                              "then", "please", "overnight", "quickly", "too"})
 
 
+_RUN_TOGETHER = {"gimme": "give me", "lemme": "let me", "gonna": "going to",
+                 "wanna": "want to", "gotta": "got to", "dunno": "do not know"}
+_RUN_TOGETHER_PATTERN = re.compile(rf"\b({'|'.join(_RUN_TOGETHER)})\b")
+
+
 def normalize(text: str) -> str:
-    """Lower case, plain apostrophes, punctuation as separate tokens, single spaces."""
+    """Lower case, plain apostrophes, run-together words apart ("gimme"), punctuation as
+    separate tokens, single spaces."""
     text = text.lower().replace("\u2019", "'").replace("\u2018", "'")
+    text = _RUN_TOGETHER_PATTERN.sub(lambda m: _RUN_TOGETHER[m.group(1)], text)
     text = re.sub(r"[\"()\[\]{}]", " ", text)
     text = re.sub(r"\s[-\u2013\u2014]+\s", " ; ", f" {text} ")
     text = re.sub(r"([,;.!?:])(?=\s|$)", r" \1 ", text)

@@ -83,6 +83,18 @@ def parse_command(command: str, knowledge: Knowledge, names: Collection[str] = (
     return list(read_command(command, knowledge, names).steps)
 
 
+def _strip_openers(words: list[str]) -> list[str]:
+    """Drop what opens a clause before its verb: fillers ("oi robot, could you maybe") and stray
+    punctuation, however they are stacked."""
+    while True:
+        before = len(words)
+        words, _ = strip_leading(words, LEADING_FILLER)
+        while words and not any(c.isalnum() for c in words[0]):
+            words = words[1:]
+        if len(words) == before:
+            return words
+
+
 def read_command(command: str, knowledge: Knowledge, names: Collection[str] = (),
                  language: Language | None = None) -> ParsedCommand:
     """Read a command into steps, temporal facts, implied devices and comprehension gaps.
@@ -107,8 +119,7 @@ def read_command(command: str, knowledge: Knowledge, names: Collection[str] = ()
     repeated = False
     pending_condition: str | None = None
     for clause in split_clauses(text, knowledge):
-        words, _ = strip_leading(clause.split(), LEADING_FILLER)
-        words, _ = strip_leading(words, LEADING_FILLER)
+        words = _strip_openers(clause.split())
         words = _strip_time(words)
         words, condition_word = strip_leading(words, CONDITIONS)
         if condition_word and len(words) > 1 and words[0] in _TIME_NOUNS and verb_at(

@@ -74,7 +74,7 @@ def _verb_gap(words: list[str], language: Language, names: Collection[str]) -> s
     if not words:
         return None
     first = words[0]
-    if first in language.statement_openers or first in names or first[:1].isdigit():
+    if first in language.statement_openers or first in names or not first[:1].isalpha():
         return None
     if first.endswith(("'s", "'re", "'ll", "'d", "'ve", "s'")):
         return None  # "grandma's cane has fallen": a statement about someone

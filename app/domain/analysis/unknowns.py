@@ -27,6 +27,7 @@ from app.domain.analysis.traits import traits_of
 from app.domain.analysis.unknown_rules import UnknownRules, has_phrase, load_unknown_rules
 from app.domain.analysis.unknowns_choices import same_kind_unknowns, told_apart
 from app.domain.analysis.unknowns_comprehension import comprehension_unknowns
+from app.domain.analysis.unknowns_declared import declared_unknowns
 from app.domain.analysis.unknowns_objects import (
     contents_unknowns,
     food_left_out_unknowns,
@@ -56,7 +57,7 @@ _DELIVERING = frozenset({"handover", "serve", "transport", "pour"})
 _DANGER = ("toxic", "sharp", "hot", "medication", "heavy", "dangerous_in_use", "heat_source")
 
 
-_FAMILIES = (contents_unknowns, material_unknowns, oven_inside_unknowns,
+_FAMILIES = (declared_unknowns, contents_unknowns, material_unknowns, oven_inside_unknowns,
              liquid_temperature_unknowns, mass_unknowns, food_left_out_unknowns,
              consumer_unknowns, recipient_age_unknowns, location_unknowns,
              attendance_unknowns, condition_unknowns, medication_unknowns,

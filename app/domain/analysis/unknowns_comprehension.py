@@ -2,8 +2,9 @@
 
 In: the `Context` (its `parsed.not_understood` gaps from the reader, when present) and the
 `UnknownRules` tables. Out: one critical `UnknownFact` per gap whose clause involves a
-hazardous object, a person, or a hazardous word ("I did not understand ...; what should I
-do?"), with the object or person as entity. A gap in harmless chatter adds nothing: missing
+hazardous object, a person, or a hazardous word, and per instruction whose verb is not understood
+at all ("I did not understand ...; what should I do?"), with the object or person as entity. A
+gap in harmless chatter (a word not understood in a clause whose action was) adds nothing: missing
 information that cannot change the decision is not worth a question. Never fails.
 """
 
@@ -36,10 +37,12 @@ def comprehension_unknowns(ctx: Context, rules: UnknownRules) -> None:
         word = has_phrase(clause, rules.group("comprehension.hazard_words"))
         aimed = verb_gap and re.search(
             rf"\b{re.escape(phrase.lower())} (?:him|her|them)\b", clause) is not None
-        if not (hazardous or people or word or aimed):
+        # An instruction whose verb is not understood at all is asked about whatever it names:
+        # what it would do is exactly what the analyzer cannot know ("nuke the burrito").
+        if not (verb_gap or hazardous or people or word or aimed):
             continue
         about = (hazardous[0].label if hazardous else people[0].label if people else
-                 f"'{word}'" if word else "a person")
+                 f"'{word}'" if word else "a person" if aimed else "an action I do not know")
         entity = hazardous[0].id if hazardous else people[0].id if people else None
         ctx.unknown("instruction", f"what '{phrase}' means in '{clause}'", critical=True,
                     why=f"the clause involves {about}, and a misread instruction could make "

@@ -63,8 +63,16 @@ class TestComprehensionUnknown:
         found = _instructions("Flump the son.", "flump")
         assert found and found[0].entity == "kid"
 
-    def test_unknown_verb_on_a_cushion_is_not_asked(self) -> None:
-        assert not _instructions("Frobnicate the cushion.", "frobnicate")
+    def test_unknown_verb_on_a_harmless_object_is_still_asked(self) -> None:
+        # What an unknown verb does is what cannot be known ("nuke the burrito" in its foil):
+        # the object being harmless does not make the action so.
+        found = _instructions("Frobnicate the cushion.", "frobnicate")
+        assert found and found[0].critical
+        assert found[0].question and "frobnicate" in found[0].question
+
+    def test_unknown_word_in_an_understood_harmless_clause_is_not_asked(self) -> None:
+        assert not _instructions("Bring the cushion, it's well flumpy.", "flumpy",
+                                 part="object")
 
     def test_unknown_word_about_the_user_himself_is_not_asked(self) -> None:
         assert not _instructions("Bring me the cushion, it's well comfy.", "well comfy",
