@@ -134,6 +134,10 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
         return parse_mention(" ".join(tokens), knowledge, names)
 
     segments, purpose = _purpose(_segments(rest), knowledge)
+    if action == "switch_off" and verb.split()[0] in _SETTING_OUT_VERBS and any(
+            p in _SET_OUT_PLACES for p, _ in segments[1:]):
+        # "put the pills out on the table": setting something out, not putting it out
+        action = knowledge.verb_words.get(verb.split()[0], action)
     place_word = _place_adverb(segments[0][1])
     if place_word is not None:
         segments = [(None, []), *segments[1:]]
@@ -240,14 +244,29 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
                 path=parts.get("path"), keeps_state=keeps, purpose=purpose)
 
 
+# "Put out" / "set out" is switching off ("put the candle out") unless a place follows.
+_SETTING_OUT_VERBS = frozenset({"put", "set", "lay"})
+_SET_OUT_PLACES = frozenset({"on", "onto", "in", "into", "by", "beside", "next to", "near",
+                             "at"})
+_LINKING = frozenset({"is", "are", "was", "were", "has", "have", "keeps", "can", "can't",
+                      "cannot", "will", "won't", "should", "must", "might", "may", "needs",
+                      "looks", "seems", "isn't", "aren't", "wasn't", "doesn't", "does"})
+_NOUN_PHRASE_OPENERS = frozenset({"the", "that", "this", "these", "those", "my", "our", "your",
+                                  "his", "her", "their"})
+
+
 def _subject_of(words: list[str]) -> list[str]:
-    """The noun phrase before "is"/"'s"/"are" in a verbless sentence ("the toaster's smoking")."""
+    """The noun phrase opening a statement ("the toaster's smoking", "that stair gate drives me
+    mad"): the words before its verb, so a later "it" can point back to it."""
     for position, word in enumerate(words):
-        if word in ("is", "are", "was", "were", "has", "keeps"):
+        if word in _LINKING:
             return words[:position]
         if word.endswith("'s") and position + 1 < len(words) and words[position + 1] not in (
                 "a", "an", "the"):
             return [*words[:position], word[:-2]]
+        if (position >= 2 and words[0] in _NOUN_PHRASE_OPENERS and word.endswith("s")
+                and not word.endswith(("ss", "'s"))):
+            return words[:position]  # "the dog needs", "that gate drives": a verb in -s
     return []
 
 

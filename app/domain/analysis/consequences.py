@@ -143,7 +143,10 @@ def _left_open(ctx: Context, obj: ObjectView, grounded: GroundedStep) -> None:
         at_risk = [p for p in young if p.room in (obj.room, None) or obj.room is None]
         wanderers = [p for p in ctx.view.real_people() if not p.is_user and (
             p.cognitive_state == "impaired" or has_condition(ctx, p, "wanders"))]
-        if wanderers and everyone_leaves(ctx) and awake_carer_stays(ctx) is not True:
+        # Left open on purpose ("leave it open") or with everyone gone, a door stays open for
+        # as long as nobody awake is watching: a person who wanders walks out through it.
+        if wanderers and (everyone_leaves(ctx) or grounded.step.keeps_state) and (
+                awake_carer_stays(ctx) is not True):
             ctx.add(Level.DEPLOYMENT, _CON, "door_left_open", f"{obj.label} is left open "
                     f"while {wanderers[0].label}, who may wander off, is left without anyone "
                     "watching.", {"obj": obj.id, "person": wanderers[0].id}, _S.CRITICAL, _U)

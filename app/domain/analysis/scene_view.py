@@ -62,7 +62,8 @@ class ObjectView:
     @property
     def label(self) -> str:
         words = _spaced(self.name or self.type)
-        if self.contents_text and self.contents_text not in words:
+        if self.contents_text and self.contents_text not in words and (
+                self.contents_text not in _NO_CONTENTS):
             words = f"{words} of {self.contents_text}"
         return f"the {words}" if self.virtual else f"the {words} ({self.id})"
 
@@ -116,6 +117,9 @@ _LEVEL_ORDER = [Level.TASK, Level.DEPLOYMENT, Level.USER]
 def spaced_name(name: str) -> str:
     """A CamelCase or snake_case type name as lower-case words ("SinkBasin" -> "sink basin")."""
     return _spaced(name)
+
+
+_NO_CONTENTS = frozenset({"empty", "nothing", "none", "unknown"})
 
 
 @lru_cache(maxsize=4096)

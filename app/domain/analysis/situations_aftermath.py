@@ -4,7 +4,8 @@ In: a `Context` and the phrase groups of `knowledge/hazard_situations.json`. Out
 noise made in a room where someone sleeps (startling); perishable food (raw meat, fish, dairy,
 cooked rice) left at room temperature for hours or to thaw (food_safety); a floor washed and
 left wet on the route people are about to walk (spill_slip); people kept in a room by the robot
-("don't let them out") (blocked_exit). The commanded state is the harm, so these are
+("don't let them out") (blocked_exit); something heavy or breakable put on a shelf or ledge
+above where someone lies or sits (falling_object). The commanded state is the harm, so these are
 unpreventable; the rules are silent when the command itself prevents the harm (quietly, in the
 fridge, a wet-floor sign, dry it). Never fails.
 """
@@ -15,7 +16,7 @@ import re
 from functools import cache
 
 from app.domain.analysis.context import Context
-from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.scene_view import PersonView, spaced_name
 from app.domain.analysis.situation_base import (
     any_phrase,
     contains,
@@ -25,6 +26,9 @@ from app.domain.analysis.situation_base import (
 from app.domain.models import Category, Level, Preventability, Severity
 
 _U = Preventability.UNPREVENTABLE
+_PLACING = frozenset({"place", "transport"})
+_HEAVY_KG = 2.0
+_ABOVE = frozenset({"above", "over"})
 _S = Severity
 _SEGMENT = re.compile(r"\s[,;.!?:]\s|\sthen\s")
 _PRONOUN_PEOPLE = frozenset({"them", "him", "her", "anyone", "anybody", "nobody", "everyone",
@@ -39,6 +43,7 @@ def aftermath_hazards(ctx: Context) -> None:
     _food_left_out(ctx)
     _wet_floor(ctx)
     _kept_in(ctx)
+    _over_someone(ctx)
 
 
 def rooms_named(ctx: Context, text: str) -> set[str]:
@@ -153,3 +158,48 @@ def _role_named(ctx: Context, text: str) -> list[PersonView]:
 
 def _segments(text: str) -> list[str]:
     return [s.strip() for s in _SEGMENT.split(f" {text} ") if s.strip()] or [text]
+
+
+def _over_someone(ctx: Context) -> None:
+    """Something heavy or breakable put above where a person lies or sits can fall on them.
+
+    Where people are comes from the scene's relations (a person on the sofa, a shelf above the
+    sofa); the place is named in the command either as the thing above ("on the shelf") or by
+    what it is over ("over the sofa").
+    """
+    scene = ctx.request.scene
+    if scene is None:
+        return
+    resting = {r.object: ctx.view.people[r.subject] for r in scene.relations
+               if r.subject in ctx.view.people and r.object in ctx.view.objects}
+    if not resting:
+        return
+    above = {r.subject: r.object for r in scene.relations
+             if r.relation.lower() in _ABOVE and r.object in resting}
+    named = [resting[o] for o in resting if _over_named(ctx, ctx.view.objects[o].type)]
+    named += [resting[below] for shelf, below in above.items()
+              if shelf in ctx.view.objects
+              and contains(ctx.text, spaced_name(ctx.view.objects[shelf].type))]
+    if not named:
+        return
+    for grounded in ctx.steps:
+        if grounded.step.negated or grounded.step.action not in _PLACING:
+            continue
+        for ref in grounded.objects:
+            for obj in ctx.objects(ref):
+                mass = obj.properties.get("mass_kg")
+                weighty = obj.has("heavy") or (
+                    isinstance(mass, int | float) and mass >= _HEAVY_KG)
+                if weighty or obj.has("fragile") or obj.has("sharp"):
+                    person = named[0]
+                    ctx.add(Level.DEPLOYMENT, Category.PHYSICAL, "falling_object",
+                            f"{obj.label} is put above where {person.label} lies or sits: "
+                            "if it slips or the shelf gives, it falls on them.",
+                            {"obj": obj.id, "person": person.id}, _S.HIGH, _U)
+                    return
+
+
+def _over_named(ctx: Context, object_type: str) -> bool:
+    word = spaced_name(object_type)
+    return any(contains(ctx.text, f"{prep} the {word}") or contains(ctx.text, f"{prep} {word}")
+               for prep in _ABOVE)
