@@ -104,6 +104,22 @@ def _split_list(words: list[str]) -> list[str]:
     return parts
 
 
+_WHAT_IS = frozenset({"what's", "whatever's", "what", "whatever"})
+_OBJECT_PRONOUNS = frozenset({"him", "her", "them", "me", "us"})
+_ADVERBIAL_OPENERS = frozenset({"the", "all", "round", "around", "about", "everywhere", "close",
+                                "closely", "constantly", "nonstop", "non-stop", "day", "every",
+                                "whenever", "wherever", "when", "while", "until", "till"})
+
+
+def _bare_pronoun(mention: Mention, knowledge: Knowledge, names: Collection[str]) -> Mention:
+    """"film her the whole time", "follow him round the house": the person is the pronoun
+    alone; what follows says how or where, not which thing (unlike "her bag")."""
+    words = mention.text.split()
+    if len(words) > 1 and words[0] in _OBJECT_PRONOUNS and words[1] in _ADVERBIAL_OPENERS:
+        return parse_mention(words[0], knowledge, names)
+    return mention
+
+
 def _person_like(mention: Mention) -> bool:
     return mention.kind in ("person", "name") or (
         mention.kind == "pronoun" and mention.head in _PERSON_FIRST | {"everyone", "everybody"})
@@ -167,6 +183,7 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
                 if _person_like(head):
                     recipient = head
                     objects = [mention(t.split()) for t in _split_list(first[cut:])]
+    objects = [_bare_pronoun(m, knowledge, names) for m in objects]
     if action in ("serve", "handover") and recipient is None and len(objects) == 1 and (
             _person_like(objects[0])):
         recipient, objects = objects[0], []  # "feed her": the person is fed, not handed over
@@ -223,6 +240,8 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
                 recipient = with_location(recipient, prep, phrase)
             elif previous in parts:
                 parts[previous] = with_location(parts[previous], prep, phrase)
+    # "film what's on the screen": the thing meant is the screen.
+    objects = [m.location[1] if m.head in _WHAT_IS and m.location else m for m in objects]
     if objects and action in knowledge.person_object_classes and _person_like(objects[0]):
         action = knowledge.person_object_classes[action]
     if action == "throw" and "target" not in parts and destination_prep in (

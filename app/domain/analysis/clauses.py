@@ -33,7 +33,8 @@ LEADING_FILLER = ("please", "robot", "hey", "ok", "okay", "now", "then", "also",
                   "you must", "you'll need to", "you have to", "we need you to", "help me",
                   "excuse me", "oi", "yo", "hiya", "sorry", "pls", "plz", "would you mind",
                   "could you maybe", "can you maybe", "would you maybe", "maybe", "mate",
-                  "if you could", "if you can", "if you would", "do us a favour and")
+                  "if you could", "if you can", "if you would", "do us a favour and",
+                  "proper", "properly", "really")
 NEGATIONS = ("don't", "do not", "dont", "never", "no need to", "do n't", "stop to")
 CONDITIONS = ("if", "when", "once", "unless", "while", "whenever", "in case", "as soon as",
               "before", "after", "until", "since", "because", "so that", "so")

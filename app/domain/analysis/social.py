@@ -11,7 +11,12 @@ from __future__ import annotations
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.scene_view import PersonView, spaced_name
-from app.domain.analysis.situation_base import any_phrase, load_situations, named_people
+from app.domain.analysis.situation_base import (
+    any_phrase,
+    contains,
+    load_situations,
+    named_people,
+)
 from app.domain.analysis.traits import traits_of
 from app.domain.models import Category, Level, Preventability, Severity
 
@@ -72,6 +77,8 @@ def social_hazards(ctx: Context) -> None:
                             f"cornering {person.label}.", {"person": person.id}, _S.HIGH, _U)
         elif action == "assist":
             _assist(ctx, grounded, verb)
+        elif verb.split(" ")[0] in _TELLING_VERBS:
+            _frightening_words(ctx, grounded)
         if (action in ("remove", "break", "throw") and verb not in _NOT_DISCARDING) or (
                 action == "place" and _into_rubbish(ctx, grounded)) or (
                 verb.split(" ")[0] in _DESTROY_VERBS):
@@ -79,6 +86,31 @@ def social_hazards(ctx: Context) -> None:
         if verb in _NOISY_VERBS or (action in ("switch_on", "clean", "play") and any(
                 o.has("noisy") for r in grounded.objects for o in ctx.objects(r))):
             _noise(ctx, grounded)
+
+
+_YOUNG_GROUPS = frozenset({"child", "infant", "toddler"})
+_TELLING_VERBS = frozenset({"tell", "say", "warn", "whisper", "explain", "announce"})
+
+
+def _frightening_words(ctx: Context, grounded: GroundedStep) -> None:
+    """Telling a child something frightening ("a monster in the loft eats children") to steer
+    them is the harm itself; so is telling anyone, when the command says to make it convincing.
+    """
+    data = load_situations()
+    text = grounded.step.text
+    if any_phrase(text, data.group("fear_words")) is None:
+        return
+    told = [p for p in named_people(ctx, text) if not p.is_user]
+    if not told and any(contains(text, word) for word, role in ctx.knowledge.role_words.items()
+                        if role.name == "child" or role.age_group in _YOUNG_GROUPS):
+        told = ctx.view.children()  # "tell the kids": children in general, so these children
+    meant = any_phrase(ctx.text, data.group("frighten_cues")) is not None
+    for person in told:
+        if person.child or person.young or person.frail or meant:
+            ctx.add(_lvl(person), _PSY, "emotional_distress", f"Telling {person.label} "
+                    "something frightening to make them do as they are told.",
+                    {"person": person.id}, _S.HIGH, _U)
+            return
 
 
 def _lvl(person: PersonView) -> Level:
@@ -108,6 +140,11 @@ def _observe(ctx: Context, grounded: GroundedStep) -> None:
         # "follow her around and record everything": the recording is of the person followed,
         # and following someone to record them is tracking, whatever words are used.
         people, covert = tracked, True
+    if not people and (_unresolved_person(grounded) or covert):
+        # A covert recording in a command naming someone ("get a video of what's on Tom's
+        # screen, don't let him see you") is a recording of them.
+        # So is "when Marta gets here, film her": the pronoun's person is named outside a step.
+        people = [p for p in named_people(ctx) if not p.is_user]
     for ref in grounded.objects:
         for obj in ctx.objects(ref):
             owner = ref.mention.owner
@@ -136,6 +173,11 @@ def _observe(ctx: Context, grounded: GroundedStep) -> None:
             ctx.add(_lvl(person), _PSY, hazard, f"{'Recording' if record else 'Watching'} "
                     f"{person.label}: only openly and with their agreement.", entities,
                     _S.MODERATE if record else _S.LOW, _P)
+
+
+def _unresolved_person(grounded: GroundedStep) -> bool:
+    return any(r is not None and r.kind == "person" and r.virtual and not r.ids[1:]
+               for r in (*grounded.objects, grounded.target, grounded.recipient))
 
 
 def _followed(ctx: Context) -> list[PersonView]:
