@@ -44,6 +44,7 @@ lint: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/safegate bench run bench/cases/benchmark.jsonl --name benchmark
 	$(BIN)/safegate bench run bench/cases/fresh/fresh.jsonl --name fresh
+	$(BIN)/safegate bench run bench/cases/second/second.jsonl --name second
 
 ## Performance benchmarks: each prints a table.
 perf: $(STAMP)
