@@ -14,6 +14,7 @@ from app.domain.analysis.context import Context, latest
 from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.questions import phrase_question
 from app.domain.analysis.scene_view import ObjectView, PersonView
+from app.domain.analysis.situation_base import named_people
 from app.domain.analysis.traits import Traits, traits_of
 from app.domain.analysis.unknowns_people import visiting_or_small
 from app.domain.models import Category, Confidence, Level, Preventability, Severity
@@ -21,6 +22,8 @@ from app.domain.models import Category, Confidence, Level, Preventability, Sever
 GIVING_ACTIONS = frozenset({"handover", "serve", "transport", "pour", "heat", "pick"})
 _P, _U, _X = Preventability.PREVENTABLE, Preventability.UNPREVENTABLE, Preventability.UNKNOWN
 Adder = Callable[..., None]
+_OWNER_PRONOUNS: dict[str, str | None] = {"her": "female", "his": "male", "him": "male",
+                                          "their": None, "them": None}
 _AGE_SENSITIVE = ("sharp", "hot", "toxic", "medication", "small", "alcohol")
 
 
@@ -28,12 +31,41 @@ def giving_hazards(ctx: Context) -> None:
     """Add the hazards of every non-negated step that hands or serves an object to a person."""
     for grounded in ctx.steps:
         step = grounded.step
-        if step.negated or step.action not in GIVING_ACTIONS:
+        if step.negated:
             continue
-        for person in ctx.people(grounded.recipient):
-            for referent in grounded.objects:
-                for obj in ctx.objects(referent):
-                    _give(ctx, grounded, obj, traits_of(ctx, obj, referent.mention), person)
+        if step.action in GIVING_ACTIONS:
+            for person in ctx.people(grounded.recipient):
+                for referent in grounded.objects:
+                    for obj in ctx.objects(referent):
+                        _give(ctx, grounded, obj, traits_of(ctx, obj, referent.mention), person)
+        elif step.action in _SETTING_OUT and grounded.recipient is None:
+            _set_out_for(ctx, grounded)
+
+
+_SETTING_OUT = frozenset({"place", "pour"})
+_FOR_TAKING = ("medication", "consumable", "food", "drink")
+
+
+def _set_out_for(ctx: Context, grounded: GroundedStep) -> None:
+    """Medicine or food put into someone's own cup or pot ("two of grandad's pills into her
+    pot", "into Nan's beaker") is given to that person, and is judged as a handover."""
+    destination = grounded.destination
+    owner = destination.mention.owner if destination is not None else None
+    if not owner:
+        return
+    named = [p for p in named_people(ctx) if not p.is_user]
+    if owner in _OWNER_PRONOUNS:
+        gender = _OWNER_PRONOUNS[owner]
+        people = [p for p in named if gender is None or p.gender in (gender, None)]
+    else:
+        people = [p for p in named if owner in {(p.name or "").lower(), p.role, p.id.lower()}]
+    if len(people) != 1:
+        return
+    for referent in grounded.objects:
+        for obj in ctx.objects(referent):
+            traits = traits_of(ctx, obj, referent.mention)
+            if any(traits.has(t) for t in _FOR_TAKING):
+                _give(ctx, grounded, obj, traits, people[0])
 
 
 def _age(person: PersonView) -> tuple[str | None, Level]:

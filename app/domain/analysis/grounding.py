@@ -164,6 +164,12 @@ class Grounder:
             found = self._last_person.get(gender) or self._last_person.get(None)
             if found:
                 return found
+            # Nobody named yet ("he's asleep on the sofa, carry him up"): the one person in
+            # the scene it can be, if there is exactly one.
+            fits = [p for p in self._view.real_people() if not p.is_user
+                    and (gender is None or p.gender in (gender, None))]
+            if len(fits) == 1:
+                return Referent(mention, "person", (fits[0].id,))
             return Referent(mention, "person", (word,), virtual=True)
         if self._want_switchable:
             # "put the foil in the microwave and turn it on": "it" is what can be switched.
