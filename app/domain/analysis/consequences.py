@@ -219,7 +219,11 @@ def _reach(ctx: Context, grounded: GroundedStep, obj: ObjectView, medication: bo
     hazard = "medication_left_accessible" if medication else "hazard_left_in_reach"
     safe = ctx.place_in(mention, "safe_storage") or ctx.cue("keep_away") or (
         grounded.step.verb in ("put away", "store", "lock up", "hide"))
-    low = ctx.place_in(mention, "low_reach")
+    # Low is what the command says, or where the named destination itself sits ("in there":
+    # the fruit bowl on the coffee table).
+    low = ctx.place_in(mention, "low_reach") or any(
+        any(contains(" ".join(sorted(o.place_words)), w) for w in ctx.knowledge.places[
+            "low_reach"]) for o in ctx.objects(grounded.destination))
     if safe or grounded.step.action in ("handover", "serve") or grounded.recipient:
         return
     child_place = mention is not None and any(w in mention.text for w in (

@@ -58,7 +58,7 @@ def social_hazards(ctx: Context) -> None:
                         "slowly and speak before touching.", {"person": person.id},
                         _S.MODERATE if person.frail else _S.LOW, _P)
         elif action == "scare":
-            for person in _people(ctx, grounded):
+            for person in _people(ctx, grounded) or _scared_anyway(ctx, grounded):
                 fragile = person.frail or person.asleep or person.child
                 ctx.add(_lvl(person), _PSY, "startling", f"Deliberately startling "
                         f"{person.label}.", {"person": person.id},
@@ -173,6 +173,15 @@ def _observe(ctx: Context, grounded: GroundedStep) -> None:
             ctx.add(_lvl(person), _PSY, hazard, f"{'Recording' if record else 'Watching'} "
                     f"{person.label}: only openly and with their agreement.", entities,
                     _S.MODERATE if record else _S.LOW, _P)
+
+
+def _scared_anyway(ctx: Context, grounded: GroundedStep) -> list[PersonView]:
+    """Whom "jump out and roar at them" is aimed at when the parse did not say: the people the
+    command names ("when the twins come in"), else everyone else in the scene."""
+    if not any(w in grounded.step.text.split() for w in ("them", "him", "her", "everyone")):
+        return []
+    named = [p for p in named_people(ctx) if not p.is_user]
+    return named or [p for p in ctx.view.real_people() if not p.is_user]
 
 
 def _unresolved_person(grounded: GroundedStep) -> bool:

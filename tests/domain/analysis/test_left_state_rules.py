@@ -99,3 +99,29 @@ class TestReading:
         found = _hazards("That stair gate drives me mad. Open it and leave it open.", objects,
                          people)
         assert any(h.hazard_class == "safety_barrier_removed" for h in found)
+
+
+class TestLeftLow:
+    _BUCKET = [{"id": "bucket_1", "type": "MopBucket", "room": "nursery",
+                "properties": {"contents": "diluted bleach", "toxic": True}}]
+    _BABY = [{"id": "baby", "role": "baby", "room": "nursery", "posture": "crawling",
+              "properties": {"age_group": "infant"}}]
+
+    def test_toxic_bucket_left_in_the_corner_by_a_crawling_baby(self) -> None:
+        found = [h for h in _hazards("Leave the bucket in the corner.", self._BUCKET,
+                                     self._BABY) if h.hazard_class == "hazard_left_in_reach"]
+        assert any(h.preventability is Preventability.UNPREVENTABLE for h in found)
+
+    def test_the_same_bucket_put_in_the_locked_cupboard(self) -> None:
+        found = [h for h in _hazards("Put the bucket in the locked cupboard.", self._BUCKET,
+                                     self._BABY) if h.hazard_class == "hazard_left_in_reach"]
+        assert not any(h.preventability is Preventability.UNPREVENTABLE for h in found)
+
+
+class TestScaredAnyway:
+    def test_roar_at_them_when_the_twins_come_in(self) -> None:
+        twins = [{"id": f"twin_{n}", "role": "twin", "room": "hallway",
+                  "properties": {"age_group": "child"}} for n in (1, 2)]
+        found = _hazards("Hide in the cupboard and when the twins come in jump out and roar "
+                         "at them, give them a fright.", [], twins)
+        assert any(h.hazard_class == "startling" for h in found)
