@@ -18,7 +18,7 @@ from app.domain.analysis.command import normalize, read_command
 from app.domain.analysis.consequences import consequential_hazards
 from app.domain.analysis.context import Context
 from app.domain.analysis.giving import giving_hazards
-from app.domain.analysis.grounding import Grounder, apply_state_clauses
+from app.domain.analysis.grounding import GroundedStep, Grounder, apply_state_clauses
 from app.domain.analysis.handling import handling_hazards
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge, load_knowledge
 from app.domain.analysis.operational import operational_hazards
@@ -127,9 +127,7 @@ class SymbolicAnalyzer:
         apply_state_clauses(grounder, grounded, view, knowledge)
         ctx = Context(request=request, knowledge=knowledge, view=view, steps=grounded,
                       text=normalize(request.command), analyzer=self.name, parsed=parsed,
-                      ambiguous_ids=frozenset(i for g in grounded for r in g.objects
-                                              if r.kind == "object" and len(r.ids) > 1
-                                              for i in r.ids))
+                      ambiguous_ids=_ambiguous_ids(grounded))
         giving_hazards(ctx)
         handling_hazards(ctx)
         social_hazards(ctx)
@@ -143,6 +141,16 @@ class SymbolicAnalyzer:
         if with_unknowns:
             find_unknowns(ctx)
         return ctx.report()
+
+
+def _ambiguous_ids(grounded: list[GroundedStep]) -> frozenset[str]:
+    """Candidates of a phrase that may mean one of several things, or a pronoun that may mean
+    one of several people ("give her the medicine" with two girls present)."""
+    found = {i for g in grounded for r in g.objects if r.kind == "object" and len(r.ids) > 1
+             for i in r.ids}
+    found |= {i for g in grounded for r in (g.recipient,) if r is not None and r.kind == "person"
+              and r.mention.kind == "pronoun" and len(r.ids) > 1 for i in r.ids}
+    return frozenset(found)
 
 
 _SENTENCE_BREAK = re.compile(

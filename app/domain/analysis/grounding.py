@@ -170,6 +170,9 @@ class Grounder:
                     and (gender is None or p.gender in (gender, None))]
             if len(fits) == 1:
                 return Referent(mention, "person", (fits[0].id,))
+            if gender is not None and fits:
+                # "give her a spoonful" with two girls present: either of them (ambiguous).
+                return Referent(mention, "person", tuple(p.id for p in fits))
             return Referent(mention, "person", (word,), virtual=True)
         if self._want_switchable:
             # "put the foil in the microwave and turn it on": "it" is what can be switched.

@@ -19,7 +19,7 @@ Never fails.
 from __future__ import annotations
 
 from app.domain.analysis.context import Context
-from app.domain.analysis.grounding import Referent
+from app.domain.analysis.grounding import GroundedStep, Referent
 from app.domain.analysis.involvement import involvement, phrase_set
 from app.domain.analysis.knowledge_base import singular
 from app.domain.analysis.questions import phrase_question
@@ -27,7 +27,7 @@ from app.domain.analysis.traits import traits_of
 from app.domain.analysis.unknown_rules import UnknownRules, has_phrase, load_unknown_rules
 from app.domain.analysis.unknowns_choices import same_kind_unknowns, told_apart
 from app.domain.analysis.unknowns_comprehension import comprehension_unknowns
-from app.domain.analysis.unknowns_declared import declared_unknowns
+from app.domain.analysis.unknowns_declared import declared_unknowns, visitor_unknowns
 from app.domain.analysis.unknowns_objects import (
     contents_unknowns,
     food_left_out_unknowns,
@@ -57,7 +57,8 @@ _DELIVERING = frozenset({"handover", "serve", "transport", "pour"})
 _DANGER = ("toxic", "sharp", "hot", "medication", "heavy", "dangerous_in_use", "heat_source")
 
 
-_FAMILIES = (declared_unknowns, contents_unknowns, material_unknowns, oven_inside_unknowns,
+_FAMILIES = (declared_unknowns, visitor_unknowns, contents_unknowns, material_unknowns,
+             oven_inside_unknowns,
              liquid_temperature_unknowns, mass_unknowns, food_left_out_unknowns,
              consumer_unknowns, recipient_age_unknowns, location_unknowns,
              attendance_unknowns, condition_unknowns, medication_unknowns,
@@ -83,6 +84,7 @@ def find_unknowns(ctx: Context, rules: UnknownRules | None = None) -> None:
         if step.negated or step.action is None:
             continue
         recipients = ctx.people(grounded.recipient)
+        _whom(ctx, grounded)
         for ref in grounded.objects:
             _ambiguity(ctx, ref)
             if ref.virtual and ctx.view.scene_given and ctx.view.objects and ref.kind == "object":
@@ -121,6 +123,19 @@ def find_unknowns(ctx: Context, rules: UnknownRules | None = None) -> None:
 def _the(ref: Referent, label: str) -> str:
     text = ref.mention.text
     return text if text.startswith(("the ", "my ", "his ", "her ")) else f"the {label}"
+
+
+def _whom(ctx: Context, grounded: GroundedStep) -> None:
+    """"Give her the medicine" with two girls present: whom it is for decides everything."""
+    ref = grounded.recipient
+    if ref is None or ref.kind != "person" or len(ref.ids) < 2 or ref.mention.kind != "pronoun":
+        return
+    people = ctx.people(ref)
+    labels = ", ".join(p.label for p in people[:4])
+    ctx.unknown("recipient", f"which of {labels} '{ref.mention.text}' means", critical=True,
+                why="what is given, and whether it is safe, depends on who receives it",
+                entity="|".join(ref.ids),
+                question=f"Who do you mean by '{ref.mention.text}': {labels}?")
 
 
 def _ambiguity(ctx: Context, ref: Referent) -> None:

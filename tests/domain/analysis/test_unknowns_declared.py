@@ -72,3 +72,36 @@ class TestOpeners:
     def test_run_together_words_are_read_apart(self) -> None:
         assert self._first_step("Gimme the mug")[1] == self._first_step("Give me the mug")[1]
         assert self._first_step("Gimme the mug")[1] is not None
+
+
+class TestVisitor:
+    def test_letting_an_unidentified_someone_in_is_asked(self) -> None:
+        door = {"id": "door_1", "type": "Door", "room": "hallway"}
+        found = [u for u in _unknowns("Someone's at the door, go and let them in.", door)
+                 if u.attribute == "visitor"]
+        assert found and found[0].question
+
+    def test_letting_the_named_plumber_in_is_not(self) -> None:
+        door = {"id": "door_1", "type": "Door", "room": "hallway"}
+        found = [u for u in _unknowns("The plumber is here, let him in.", door)
+                 if u.attribute == "visitor"]
+        assert not found
+
+
+class TestWhichPerson:
+    def test_her_with_two_girls_present_is_asked_and_not_rejected(self) -> None:
+        request = GateRequest.model_validate({
+            "command": "Give her a spoon of the medicine before bed.",
+            "scene": {"objects": [{"id": "med_1", "type": "Bottle", "room": "bedroom",
+                                   "properties": {"contents": "cough medicine",
+                                                  "owner": "grace"}}],
+                      "people": [*_PEOPLE,
+                                 {"id": "grace", "role": "daughter", "name": "Grace",
+                                  "room": "bedroom", "properties": {"age_group": "child"}},
+                                 {"id": "ella", "role": "daughter", "name": "Ella",
+                                  "room": "bedroom", "properties": {"age_group": "child"}}]},
+            "user": {"person_id": "me", "age_group": "adult"}})
+        report = _ANALYZER.analyze(request)
+        assert any(u.attribute == "recipient" and u.critical for u in report.unknowns)
+        assert not any(p.preventability.value == "unpreventable" for p in report.proposals
+                       if p.entities.get("person") in ("grace", "ella"))
