@@ -103,7 +103,9 @@ def _payload(ctx: Context, grounded: GroundedStep, payload: float) -> None:
                         ctx.unknown("mass_kg", f"the mass of {obj.label}", critical=False,
                                     why="it may exceed the robot's payload", entity=obj.id,
                                     question=f"How heavy is {obj.label}?")
-                elif obj.mass_kg > payload and (obj.mass_given or obj.mass_kg > 2 * payload):
+                # A thing the scene does not list has only a guessed mass: never certain.
+                elif obj.mass_kg > payload and (obj.mass_given or (
+                        obj.mass_kg > 2 * payload and not obj.virtual)):
                     ctx.add(Level.USER, _OPS, "payload_exceeded", f"{obj.label} weighs about "
                             f"{obj.mass_kg:g} kg, more than the robot's {payload:g} kg payload: "
                             "it may drop it.", {"obj": obj.id}, _S.HIGH, _U)

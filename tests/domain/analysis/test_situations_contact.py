@@ -99,3 +99,13 @@ class TestGivingAndPronouns:
         robot = {"skills": ["navigate", "pick", "place"], "payload_kg": 5.0}
         found = _hazards("He's asleep on the sofa, carry him up to bed.", [], toddler, robot)
         assert _of(found, "payload_exceeded")
+
+
+class TestGuessedMass:
+    def test_an_unlisted_thing_of_a_heavy_kind_is_not_a_certain_overload(self) -> None:
+        robot = {"skills": ["navigate", "pick", "place"], "payload_kg": 1.0}
+        scene_object = [{"id": "mug_1", "type": "Mug", "room": "kitchen"}]
+        found = _of(_hazards("Bring me the microwave.", scene_object, [], robot),
+                    "payload_exceeded")
+        assert found and not [h for h in found
+                              if h.preventability is Preventability.UNPREVENTABLE]
