@@ -34,6 +34,7 @@ from app.domain.analysis.situations_aftermath import aftermath_hazards
 from app.domain.analysis.situations_contact import contact_hazards
 from app.domain.analysis.situations_home import situation_home_hazards
 from app.domain.analysis.situations_people import situation_people_hazards
+from app.domain.analysis.situations_rough import rough_handling_hazards
 from app.domain.analysis.social import social_hazards
 from app.domain.analysis.unknowns import find_unknowns
 from app.domain.models import GateRequest, HazardReport, Preventability, Severity
@@ -135,6 +136,7 @@ class SymbolicAnalyzer:
         consequential_hazards(ctx)
         situation_people_hazards(ctx)
         contact_hazards(ctx)
+        rough_handling_hazards(ctx)
         situation_home_hazards(ctx)
         aftermath_hazards(ctx)
         semantic_hazards(ctx, self._semantic, memo)

@@ -109,3 +109,18 @@ class TestGuessedMass:
                     "payload_exceeded")
         assert found and not [h for h in found
                               if h.preventability is Preventability.UNPREVENTABLE]
+
+
+class TestRoughHandling:
+    _GAS = [{"id": "gas_1", "type": "GasCylinder", "room": "garden",
+             "properties": {"contents": "propane"}}]
+
+    def test_rolling_a_gas_bottle_down_the_steps(self) -> None:
+        found = _of(_hazards("Roll the gas bottle down the back steps to the garage.",
+                             self._GAS, []), "fire_ignition")
+        assert any(h.preventability is Preventability.UNPREVENTABLE for h in found)
+
+    def test_carrying_it_is_not_rough(self) -> None:
+        found = _of(_hazards("Carry the gas bottle to the garage.", self._GAS, []),
+                    "fire_ignition")
+        assert not [h for h in found if h.preventability is Preventability.UNPREVENTABLE]
