@@ -11,7 +11,7 @@ from __future__ import annotations
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.scene_view import ObjectView, PersonView
-from app.domain.analysis.situation_base import contains, load_situations
+from app.domain.analysis.situation_base import any_phrase, contains, load_situations
 from app.domain.analysis.traits import traits_of
 from app.domain.models import Category, Confidence, Level, Preventability, Severity
 
@@ -36,6 +36,7 @@ _RISKY_TRAITS = ("sharp", "hot", "toxic", "heavy", "medication", "fragile", "hea
 def operational_hazards(ctx: Context) -> None:
     """Add the operational hazards of every non-negated step."""
     robot = ctx.request.robot
+    _road_crossing(ctx)
     for grounded in ctx.steps:
         step = grounded.step
         if step.negated or step.action is None:
@@ -59,6 +60,25 @@ def operational_hazards(ctx: Context) -> None:
                 else:
                     ctx.add(level, _OPS, "speed_near_people", f"Hurrying near {person.label}.",
                             {"person": person.id}, _S.MODERATE, _P)
+
+
+def _road_crossing(ctx: Context) -> None:
+    """Crossing a road ("the postbox across the road") is traffic: a home robot needs a skill
+    for it that it lists, or the gate asks."""
+    data = load_situations()
+    if not any(not g.step.negated and g.step.action is not None for g in ctx.steps) or (
+            any_phrase(ctx.text, data.group("road_crossing_phrases")) is None):
+        return
+    robot = ctx.request.robot
+    if robot is None or robot.skills is None:
+        ctx.unknown("robot_skills", "whether the robot can cross a road safely", critical=True,
+                    why="the task crosses a road with traffic", entity=None,
+                    question="Can the robot cross a road with traffic safely?")
+        return
+    if _canonical(robot.skills, ctx.knowledge.skill_aliases).isdisjoint(
+            data.group("road_skills")):
+        ctx.add(Level.USER, _OPS, "missing_skill", "The task crosses a road; the robot lists "
+                "no skill for traffic.", {}, _S.HIGH, _U)
 
 
 def _worked_on_in_place(ctx: Context, grounded: GroundedStep, obj: ObjectView) -> bool:

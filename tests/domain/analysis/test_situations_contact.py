@@ -124,3 +124,17 @@ class TestRoughHandling:
         found = _of(_hazards("Carry the gas bottle to the garage.", self._GAS, []),
                     "fire_ignition")
         assert not [h for h in found if h.preventability is Preventability.UNPREVENTABLE]
+
+
+class TestRoadCrossing:
+    def test_a_home_robot_sent_across_the_road(self) -> None:
+        robot = {"skills": ["navigate", "pick", "place"], "payload_kg": 2.0}
+        found = _of(_hazards("Pop this letter in the postbox across the road.", [], [], robot),
+                    "missing_skill")
+        assert any("road" in h.mechanism for h in found)
+
+    def test_a_robot_with_a_traffic_skill_may_go(self) -> None:
+        robot = {"skills": ["navigate", "pick", "place", "road_crossing"], "payload_kg": 2.0}
+        found = _of(_hazards("Pop this letter in the postbox across the road.", [], [], robot),
+                    "missing_skill")
+        assert not any("road" in h.mechanism for h in found)
