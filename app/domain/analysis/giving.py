@@ -38,8 +38,29 @@ def giving_hazards(ctx: Context) -> None:
                 for referent in grounded.objects:
                     for obj in ctx.objects(referent):
                         _give(ctx, grounded, obj, traits_of(ctx, obj, referent.mention), person)
+                    _mislabelled(ctx, referent.mention.contents or referent.mention.substance,
+                                 person)
         elif step.action in _SETTING_OUT and grounded.recipient is None:
             _set_out_for(ctx, grounded)
+
+
+def _mislabelled(ctx: Context, asked_for: str | None, person: PersonView) -> None:
+    """"Pour Ava a glass of the lemonade" when the bottle labelled lemonade holds weedkiller:
+    what the command calls it is its label; what she would drink is what is in it."""
+    if not asked_for:
+        return
+    for obj in ctx.view.objects.values():
+        label = f"{obj.properties.get('label', '')} {obj.name or ''}".lower()
+        if obj.virtual or asked_for.lower() not in label.split():
+            continue
+        substance = ctx.knowledge.substances.get(obj.contents) if obj.contents else None
+        if obj.has("toxic") or obj.has("corrosive") or (
+                substance is not None and substance.props & {"toxic", "corrosive"}):
+            ctx.add(Level.DEPLOYMENT, Category.PHYSICAL, "chemical_ingestion", f"{obj.label} "
+                    f"is labelled '{asked_for}' but holds something toxic; {person.label} "
+                    "would drink it.", {"obj": obj.id, "person": person.id}, Severity.CRITICAL,
+                    _U)
+            return
 
 
 _SETTING_OUT = frozenset({"place", "pour"})

@@ -121,12 +121,18 @@ def _wet_floor(ctx: Context) -> None:
         return
     coming = any_phrase(text, data.group("arrival_words"))
     walkers = [p for p in ctx.view.real_people() if not p.is_user]
+    frail = [p for p in walkers if p.frail or p.child]
     if coming and walkers:
-        frail = [p for p in walkers if p.frail or p.child]
         who = (frail or walkers)[0]
         ctx.add(Level.DEPLOYMENT, Category.CONSEQUENTIAL, "spill_slip", f"The floor is left "
                 f"wet ({left_wet}) just as people come through ({coming}): {who.label} can "
                 "slip and fall.", {"person": who.id}, _S.HIGH, _U)
+    elif awake := [p for p in frail if not p.asleep]:
+        # Someone unsteady is at home and awake: they will cross it (to the toilet, the door)
+        # before it dries, whether or not the command says when.
+        ctx.add(Level.DEPLOYMENT, Category.CONSEQUENTIAL, "spill_slip", f"The floor is left "
+                f"wet ({left_wet}) while {awake[0].label}, who is unsteady, is at home: they "
+                "can slip and fall.", {"person": awake[0].id}, _S.HIGH, _U)
 
 
 def _kept_in(ctx: Context) -> None:

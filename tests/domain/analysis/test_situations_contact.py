@@ -138,3 +138,32 @@ class TestRoadCrossing:
         found = _of(_hazards("Pop this letter in the postbox across the road.", [], [], robot),
                     "missing_skill")
         assert not any("road" in h.mechanism for h in found)
+
+
+class TestMislabelledAndWet:
+    def test_lemonade_bottle_that_holds_weedkiller(self) -> None:
+        objects = [{"id": "bottle_1", "type": "Bottle", "room": "kitchen",
+                    "properties": {"label": "lemonade", "contents": "weedkiller",
+                                   "toxic": True}},
+                   {"id": "glass_1", "type": "Cup", "room": "kitchen"}]
+        ava = [{"id": "ava", "role": "granddaughter", "name": "Ava", "room": "garden",
+                "properties": {"age_group": "child"}}]
+        found = _of(_hazards("Pour Ava a glass of the lemonade.", objects, ava),
+                    "chemical_ingestion")
+        assert any(h.severity is Severity.CRITICAL for h in found)
+
+    def test_real_lemonade_is_fine(self) -> None:
+        objects = [{"id": "bottle_1", "type": "Bottle", "room": "kitchen",
+                    "properties": {"label": "lemonade", "contents": "lemonade"}},
+                   {"id": "glass_1", "type": "Cup", "room": "kitchen"}]
+        ava = [{"id": "ava", "role": "granddaughter", "name": "Ava", "room": "garden",
+                "properties": {"age_group": "child"}}]
+        assert not _of(_hazards("Pour Ava a glass of the lemonade.", objects, ava),
+                       "chemical_ingestion")
+
+    def test_floors_left_wet_while_a_frame_user_is_home(self) -> None:
+        dad = [{"id": "dad", "role": "father", "room": "living_room", "posture": "sitting",
+                "properties": {"age_group": "older_adult", "mobility": "assisted"}}]
+        found = _of(_hazards("Mop the hall and kitchen floors and leave them to dry on their "
+                             "own, don't bother drying it.", [], dad), "spill_slip")
+        assert any(h.preventability is Preventability.UNPREVENTABLE for h in found)
