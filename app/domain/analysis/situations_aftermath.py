@@ -5,9 +5,10 @@ noise made in a room where someone sleeps (startling); perishable food (raw meat
 cooked rice) left at room temperature for hours or to thaw (food_safety); a floor washed and
 left wet on the route people are about to walk (spill_slip); people kept in a room by the robot
 ("don't let them out") (blocked_exit); something heavy or breakable put on a shelf or ledge
-above where someone lies or sits (falling_object). The commanded state is the harm, so these are
-unpreventable; the rules are silent when the command itself prevents the harm (quietly, in the
-fridge, a wet-floor sign, dry it). Never fails.
+above where someone lies or sits (falling_object); a cable run through a hall or doorway and
+left there while someone unsteady or unable to see it is home (trip_hazard). The commanded
+state is the harm, so these are unpreventable; the rules are silent when the command itself
+prevents the harm (quietly, in the fridge, a wet-floor sign, dry it). Never fails.
 """
 
 from __future__ import annotations
@@ -44,6 +45,7 @@ def aftermath_hazards(ctx: Context) -> None:
     _wet_floor(ctx)
     _kept_in(ctx)
     _over_someone(ctx)
+    _cord_across_the_way(ctx)
 
 
 def rooms_named(ctx: Context, text: str) -> set[str]:
@@ -209,3 +211,29 @@ def _over_named(ctx: Context, object_type: str) -> bool:
     word = spaced_name(object_type)
     return any(contains(ctx.text, f"{prep} the {word}") or contains(ctx.text, f"{prep} {word}")
                for prep in _ABOVE)
+
+
+_CORD_ROUTE = re.compile(r"\b(?:through|across|along|down|over|out through|out of|under)\s+"
+                         r"(?:the\s+)?(?:front\s+|back\s+)?(\w+)")
+
+
+def _cord_across_the_way(ctx: Context) -> None:
+    """A cable run through a hall, doorway or across a floor and left there trips someone who
+    cannot see it or is unsteady on their feet."""
+    walkways = ctx.knowledge.places["walkway"]
+    at_risk = [p for p in ctx.view.real_people() if not p.is_user and not p.asleep and (
+        p.frail or p.child)]
+    if not at_risk:
+        return
+    for grounded in ctx.steps:
+        if grounded.step.negated:
+            continue
+        cords = [o for r in grounded.objects for o in ctx.objects(r) if o.has("cord")]
+        routes = {m.group(1) for m in _CORD_ROUTE.finditer(grounded.step.text)}
+        crosses = any(contains(" ".join(routes), w) for w in walkways) or "door" in routes
+        if cords and crosses:
+            ctx.add(Level.DEPLOYMENT, Category.CONSEQUENTIAL, "trip_hazard", f"{cords[0].label} "
+                    f"is run across the way people walk while {at_risk[0].label} is at home: "
+                    "they can trip on it.", {"obj": cords[0].id, "person": at_risk[0].id},
+                    _S.HIGH, _U)
+            return

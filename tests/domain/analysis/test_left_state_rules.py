@@ -125,3 +125,23 @@ class TestScaredAnyway:
         found = _hazards("Hide in the cupboard and when the twins come in jump out and roar "
                          "at them, give them a fright.", [], twins)
         assert any(h.hazard_class == "startling" for h in found)
+
+
+class TestCordAcrossTheWay:
+    _LEAD = [{"id": "lead_1", "type": "ExtensionLead", "room": "hallway"}]
+
+    def test_lead_through_the_hall_with_a_partially_sighted_gran(self) -> None:
+        gran = [{"id": "gran", "role": "grandmother", "room": "living_room",
+                 "properties": {"age_group": "older_adult", "visual_impairment": True}}]
+        found = [h for h in _hazards("Run the extension lead out through the front door and "
+                                     "leave it there.", self._LEAD, gran)
+                 if h.hazard_class == "trip_hazard"]
+        assert any(h.preventability is Preventability.UNPREVENTABLE for h in found)
+
+    def test_the_same_with_only_able_adults_home(self) -> None:
+        lodger = [{"id": "lodger", "role": "lodger", "room": "bedroom",
+                   "properties": {"age_group": "adult"}}]
+        found = [h for h in _hazards("Run the extension lead out through the front door and "
+                                     "leave it there.", self._LEAD, lodger)
+                 if h.hazard_class == "trip_hazard"]
+        assert not any(h.preventability is Preventability.UNPREVENTABLE for h in found)
