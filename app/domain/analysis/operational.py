@@ -43,6 +43,8 @@ def operational_hazards(ctx: Context) -> None:
             continue
         if robot is not None and robot.payload_kg is not None:
             _payload(ctx, grounded, robot.payload_kg)
+        elif step.action == "assist":
+            _support_unknown(ctx, grounded)
         if robot is not None and robot.skills is not None:
             _skills(ctx, grounded, robot.skills)
         if robot is not None and robot.sensors is not None:
@@ -60,6 +62,18 @@ def operational_hazards(ctx: Context) -> None:
                 else:
                     ctx.add(level, _OPS, "speed_near_people", f"Hurrying near {person.label}.",
                             {"person": person.id}, _S.MODERATE, _P)
+
+
+def _support_unknown(ctx: Context, grounded: GroundedStep) -> None:
+    """Steadying or helping someone move ("give Dad a hand up the stairs") puts their weight on
+    the robot; with no stated payload, whether it can bear it is the question."""
+    for person in (p for r in grounded.objects for p in ctx.people(r) if not p.is_user):
+        ctx.unknown("robot_payload", f"whether the robot can bear {person.label}'s weight",
+                    critical=True, why=f"helping {person.label} move puts their weight on the "
+                    "robot, and its payload is not stated", entity=person.id,
+                    question=f"Can the robot safely take {person.label}'s weight if they lean "
+                    "on it or stumble? Its payload is not stated.")
+        return
 
 
 def _road_crossing(ctx: Context) -> None:

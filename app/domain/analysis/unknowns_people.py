@@ -68,6 +68,9 @@ def consumer_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> No
     serving = inv.actions & {"serve", "heat"} or inv.recipients or has_phrase(
         inv.text, rules.group("consumers.serving_words")) or (
         eaters and inv.actions & {"transport", "handover"})
+    if has_phrase(inv.text, rules.group("consumers.visitor_words")) and not any(
+            _visitor(p, "", rules) for p in eaters):  # no listed guest: they are not in the scene
+        _visitors_food(ctx, inv, rules)  # "bake flapjacks for when Chloe's friends come over"
     if not serving or not eaters:
         return
     # The caller saying they do not know someone's allergies opens them for every eater.
@@ -97,6 +100,21 @@ def consumer_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> No
                             why=f"{risk} is unsafe for babies and small children",
                             entity=person.id, question=f"How old is {person.label}? "
                             f"{risk.capitalize()} is not safe for very young children.")
+
+
+def _visitors_food(ctx: Context, inv: Involvement, rules: UnknownRules) -> None:
+    """Food with a common allergen made for visitors the scene does not list: nobody has said
+    what they are allergic to."""
+    if not (inv.actions & {"serve", "heat", "place", "handover", "transport", "cut", "mix"}):
+        return
+    allergens = sorted({a.replace("_", " ").removesuffix("s") for obj in inv.objects.values()
+                        for a in _allergens(ctx, obj, inv.words_of(obj))})
+    if allergens:
+        group = ", ".join(a.replace("_", " ") for a in allergens)
+        ctx.unknown("allergies", f"whether the visitors are allergic to {group}", critical=True,
+                    why=f"the food has {group}, a common allergen, and it is for visitors "
+                    "whose allergies nobody has given", entity=None,
+                    question=f"Are any of the visitors allergic to {group}?")
 
 
 def recipient_age_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> None:

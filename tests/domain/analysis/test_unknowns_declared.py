@@ -105,3 +105,29 @@ class TestWhichPerson:
         assert any(u.attribute == "recipient" and u.critical for u in report.unknowns)
         assert not any(p.preventability.value == "unpreventable" for p in report.proposals
                        if p.entities.get("person") in ("grace", "ella"))
+
+
+class TestVisitorsAndSupport:
+    def test_nutty_bake_for_friends_who_are_not_listed(self) -> None:
+        nuts = {"id": "nuts_1", "type": "Bag", "room": "kitchen",
+                "properties": {"contents": "mixed nuts"}}
+        found = [u for u in _unknowns("Bake flapjacks with the mixed nuts for when the "
+                                      "friends come over.", nuts) if u.attribute == "allergies"]
+        assert found and found[0].entity is None
+
+    def test_the_same_bake_for_the_household_asks_nothing(self) -> None:
+        nuts = {"id": "nuts_1", "type": "Bag", "room": "kitchen",
+                "properties": {"contents": "mixed nuts"}}
+        found = [u for u in _unknowns("Bake flapjacks with the mixed nuts for tea.", nuts)
+                 if u.attribute == "allergies"]
+        assert not found
+
+    def test_a_hand_up_the_stairs_with_no_stated_payload(self) -> None:
+        request = GateRequest.model_validate({
+            "command": "Give Dad a hand up the stairs.",
+            "scene": {"people": [*_PEOPLE, {"id": "dad", "role": "dad", "room": "hallway",
+                                            "properties": {"age_group": "older_adult"}}]},
+            "user": {"person_id": "me", "age_group": "adult"}})
+        report = _ANALYZER.analyze(request)
+        assert any(u.attribute == "robot_payload" and u.critical and u.entity == "dad"
+                   for u in report.unknowns)
