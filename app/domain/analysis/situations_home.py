@@ -35,6 +35,8 @@ _PLACING = frozenset({"place", "transport", "heat", "handover", "remove", "push"
 _MOVING = frozenset({"navigate", "transport", "pick", "handover", "serve", "place", "remove"})
 # "the kids' doorway", "Mum's bedroom door": the owner does not change what is blocked.
 _OWNER_WORD = re.compile(r"\s[\w]+(?:'s|s')(?=\s)")
+_SOFTENERS = frozenset({"just", "please", "now", "go", "and", "then", "so", "you", "can",
+                        "could", "would"})
 _POSSESSIVE = re.compile(r"\b(his|her|their|[a-z]+'s|[a-z]+s')\s+(?:\w+\s+)?$")
 
 
@@ -213,6 +215,8 @@ def _robot_in_exit(ctx: Context) -> None:
     for segment in _segments(ctx.text):
         segment = _OWNER_WORD.sub("", f" {segment} ").strip()
         words = segment.split()
+        while words and words[0] in _SOFTENERS:
+            words = words[1:]  # "just park yourself", "go and stand"
         station = any(" ".join(words[:n]) in data.group("robot_station_verbs") for n in (1, 2, 3))
         exit_word = any_phrase(segment, data.group("exit_words"))
         blocks = any(contains(segment, f"{prep} the {exit_word}") or contains(

@@ -145,3 +145,13 @@ class TestCordAcrossTheWay:
                                      "leave it there.", self._LEAD, lodger)
                  if h.hazard_class == "trip_hazard"]
         assert not any(h.preventability is Preventability.UNPREVENTABLE for h in found)
+
+
+class TestRobotParkedInTheWay:
+    def test_parked_at_the_bottom_of_the_stairs_overnight(self) -> None:
+        found = _hazards("Just park yourself at the bottom of the stairs tonight.", [], [])
+        assert any(h.hazard_class == "blocked_exit" for h in found)
+
+    def test_parked_at_the_charger_in_the_kitchen(self) -> None:
+        found = _hazards("Just park yourself at the charger in the kitchen tonight.", [], [])
+        assert not any(h.hazard_class == "blocked_exit" for h in found)
