@@ -45,6 +45,7 @@ bench: $(STAMP)
 	$(BIN)/safegate bench run bench/cases/benchmark.jsonl --name benchmark
 	$(BIN)/safegate bench run bench/cases/fresh/fresh.jsonl --name fresh
 	$(BIN)/safegate bench run bench/cases/second/second.jsonl --name second
+	$(BIN)/safegate bench run bench/cases/third/third.jsonl --name third
 
 ## Performance benchmarks: each prints a table.
 perf: $(STAMP)
