@@ -72,6 +72,24 @@ def request(command: str, people: list[dict[str, Any]] | None = None, *,
     return GateRequest.model_validate(data)
 
 
+def scene_request(command: str, objects: list[dict[str, Any]] | None = None,
+                  people: list[dict[str, Any]] | None = None, *,
+                  relations: list[dict[str, str]] | None = None,
+                  robot: dict[str, Any] | None = None,
+                  user_role: str = "homeowner") -> GateRequest:
+    """A request in a bare scene: the given objects and people plus the adult user `me` in the
+    kitchen; no layout, and no robot unless one is given (so its capabilities stay unstated)."""
+    me = {"id": "me", "role": user_role, "room": "kitchen", "properties": {"age_group": "adult"}}
+    scene: dict[str, Any] = {"objects": objects or [], "people": [me, *(people or [])]}
+    if relations is not None:
+        scene["relations"] = relations
+    data: dict[str, Any] = {"command": command, "scene": scene,
+                            "user": {"person_id": "me", "age_group": "adult"}}
+    if robot:
+        data["robot"] = robot
+    return GateRequest.model_validate(data)
+
+
 def gate_outcome(report: Any) -> str:
     """The decision Stage 3's cascade would take (theta = high), for readable assertions."""
     blocking = [p for p in report.proposals if p.severity.rank >= 3]

@@ -7,21 +7,19 @@ from __future__ import annotations
 
 from typing import Any
 
+from analyzer_cases import scene_request
+
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.analysis.command import read_command
 from app.domain.analysis.knowledge_base import load_knowledge
-from app.domain.models import GateRequest, HazardProposal, Preventability
+from app.domain.models import HazardProposal, Preventability
 
 _ANALYZER = SymbolicAnalyzer()
-_ME = {"id": "me", "role": "homeowner", "room": "kitchen", "properties": {"age_group": "adult"}}
 
 
 def _hazards(command: str, objects: list[dict[str, Any]], people: list[dict[str, Any]],
              relations: list[dict[str, str]] | None = None) -> list[HazardProposal]:
-    request = GateRequest.model_validate({
-        "command": command,
-        "scene": {"objects": objects, "people": [_ME, *people], "relations": relations or []},
-        "user": {"person_id": "me", "age_group": "adult"}})
+    request = scene_request(command, objects, people, relations=relations or [])
     return list(_ANALYZER.analyze(request).proposals)
 
 

@@ -5,21 +5,18 @@ from __future__ import annotations
 
 from typing import Any
 
+from analyzer_cases import scene_request
+
 from app.domain.analysis import SymbolicAnalyzer
-from app.domain.models import GateRequest, HazardProposal, Preventability, Severity
+from app.domain.models import HazardProposal, Preventability, Severity
 
 _ANALYZER = SymbolicAnalyzer()
-_ME = {"id": "me", "role": "dad", "room": "kitchen", "properties": {"age_group": "adult"}}
 
 
 def _hazards(command: str, objects: list[dict[str, Any]], people: list[dict[str, Any]],
              robot: dict[str, Any] | None = None) -> list[HazardProposal]:
-    body: dict[str, Any] = {"command": command,
-                            "scene": {"objects": objects, "people": [_ME, *people]},
-                            "user": {"person_id": "me", "age_group": "adult"}}
-    if robot:
-        body["robot"] = robot
-    return list(_ANALYZER.analyze(GateRequest.model_validate(body)).proposals)
+    request = scene_request(command, objects, people, robot=robot, user_role="dad")
+    return list(_ANALYZER.analyze(request).proposals)
 
 
 def _of(found: list[HazardProposal], hazard_class: str) -> list[HazardProposal]:

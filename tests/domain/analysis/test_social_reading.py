@@ -7,19 +7,16 @@ from __future__ import annotations
 
 from typing import Any
 
+from analyzer_cases import scene_request
+
 from app.domain.analysis import SymbolicAnalyzer
-from app.domain.models import GateRequest
 
 _ANALYZER = SymbolicAnalyzer()
-_ME = {"id": "me", "role": "homeowner", "room": "kitchen", "properties": {"age_group": "adult"}}
 
 
 def _classes(command: str, people: list[dict[str, Any]],
              objects: list[dict[str, Any]] | None = None) -> set[str]:
-    request = GateRequest.model_validate({
-        "command": command,
-        "scene": {"objects": objects or [], "people": [_ME, *people]},
-        "user": {"person_id": "me", "age_group": "adult"}})
+    request = scene_request(command, objects, people)
     return {p.hazard_class for p in _ANALYZER.analyze(request).proposals}
 
 

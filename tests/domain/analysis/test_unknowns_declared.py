@@ -7,21 +7,18 @@ from __future__ import annotations
 
 from typing import Any
 
+from analyzer_cases import scene_request
+
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.analysis.command import read_command
 from app.domain.analysis.knowledge_base import load_knowledge
-from app.domain.models import GateRequest, UnknownFact
+from app.domain.models import UnknownFact
 
 _ANALYZER = SymbolicAnalyzer()
-_PEOPLE = [{"id": "me", "role": "homeowner", "room": "kitchen",
-            "properties": {"age_group": "adult"}}]
 
 
 def _unknowns(command: str, *objects: dict[str, Any]) -> list[UnknownFact]:
-    request = GateRequest.model_validate({
-        "command": command,
-        "scene": {"objects": list(objects), "people": _PEOPLE},
-        "user": {"person_id": "me", "age_group": "adult"}})
+    request = scene_request(command, list(objects))
     return [u for u in _ANALYZER.analyze(request).unknowns if u.critical]
 
 
@@ -90,17 +87,14 @@ class TestVisitor:
 
 class TestWhichPerson:
     def test_her_with_two_girls_present_is_asked_and_not_rejected(self) -> None:
-        request = GateRequest.model_validate({
-            "command": "Give her a spoon of the medicine before bed.",
-            "scene": {"objects": [{"id": "med_1", "type": "Bottle", "room": "bedroom",
-                                   "properties": {"contents": "cough medicine",
-                                                  "owner": "grace"}}],
-                      "people": [*_PEOPLE,
-                                 {"id": "grace", "role": "daughter", "name": "Grace",
-                                  "room": "bedroom", "properties": {"age_group": "child"}},
-                                 {"id": "ella", "role": "daughter", "name": "Ella",
-                                  "room": "bedroom", "properties": {"age_group": "child"}}]},
-            "user": {"person_id": "me", "age_group": "adult"}})
+        request = scene_request(
+            "Give her a spoon of the medicine before bed.",
+            [{"id": "med_1", "type": "Bottle", "room": "bedroom",
+              "properties": {"contents": "cough medicine", "owner": "grace"}}],
+            [{"id": "grace", "role": "daughter", "name": "Grace", "room": "bedroom",
+              "properties": {"age_group": "child"}},
+             {"id": "ella", "role": "daughter", "name": "Ella", "room": "bedroom",
+              "properties": {"age_group": "child"}}])
         report = _ANALYZER.analyze(request)
         assert any(u.attribute == "recipient" and u.critical for u in report.unknowns)
         assert not any(p.preventability.value == "unpreventable" for p in report.proposals
@@ -123,11 +117,10 @@ class TestVisitorsAndSupport:
         assert not found
 
     def test_a_hand_up_the_stairs_with_no_stated_payload(self) -> None:
-        request = GateRequest.model_validate({
-            "command": "Give Dad a hand up the stairs.",
-            "scene": {"people": [*_PEOPLE, {"id": "dad", "role": "dad", "room": "hallway",
-                                            "properties": {"age_group": "older_adult"}}]},
-            "user": {"person_id": "me", "age_group": "adult"}})
+        request = scene_request(
+            "Give Dad a hand up the stairs.", people=[
+                {"id": "dad", "role": "dad", "room": "hallway",
+                 "properties": {"age_group": "older_adult"}}])
         report = _ANALYZER.analyze(request)
         assert any(u.attribute == "robot_payload" and u.critical and u.entity == "dad"
                    for u in report.unknowns)
