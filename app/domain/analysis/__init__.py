@@ -150,7 +150,7 @@ def _ambiguous_ids(grounded: list[GroundedStep]) -> frozenset[str]:
     one of several people ("give her the medicine" with two girls present)."""
     found = {i for g in grounded for r in g.objects if r.kind == "object" and len(r.ids) > 1
              for i in r.ids}
-    found |= {i for g in grounded for r in (g.recipient,) if r is not None and r.kind == "person"
+    found |= {i for g in grounded if (r := g.recipient) is not None and r.kind == "person"
               and r.mention.kind == "pronoun" and len(r.ids) > 1 for i in r.ids}
     return frozenset(found)
 

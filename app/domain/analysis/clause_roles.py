@@ -184,9 +184,9 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
                     recipient = head
                     objects = [mention(t.split()) for t in _split_list(first[cut:])]
     objects = [_bare_pronoun(m, knowledge, names) for m in objects]
-    if action == "assist" and objects and (lead := _leading_person(
-            objects[0].text.split(), knowledge, names)):
-        objects[0] = mention(objects[0].text.split()[:lead])  # "help dad up the stairs": dad
+    first_words = objects[0].text.split() if objects else []
+    if action == "assist" and (lead := _leading_person(first_words, knowledge, names)):
+        objects[0] = mention(first_words[:lead])  # "help dad up the stairs": dad
     if action in ("serve", "handover") and recipient is None and len(objects) == 1 and (
             _person_like(objects[0])):
         recipient, objects = objects[0], []  # "feed her": the person is fed, not handed over
