@@ -202,6 +202,9 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
             allowed = (_CARRYING_DESTINATIONS if action in _CARRYING_ACTIONS
                        else _PLACE_PREPS | {"to", "at"} if action in ("place", "block")
                        else _PLACE_PREPS | {"to"})
+            if prep in allowed and verb in _FILLING_VERBS and prep in _LOCATING_PREPS and (
+                    segments[position - 1][0] in _SOURCE_PREPS):
+                continue  # "fill the bottle from the jug in the fridge": where the jug is
             if prep in allowed:
                 candidate = mention(segments[position][1])
                 if prep == "to" and _person_like(candidate):
@@ -228,7 +231,7 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
             parts["target"], previous = phrase, "target"
         elif prep == "with":
             parts["instrument"], previous = phrase, "instrument"
-        elif prep in ("from", "out of", "off"):
+        elif prep in _SOURCE_PREPS:
             parts["source"], previous = phrase, "source"
         elif prep == "away from":
             parts["away_from"], previous = phrase, "away_from"
@@ -266,6 +269,10 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
                 path=parts.get("path"), keeps_state=keeps, purpose=purpose)
 
 
+# The thing filled is the verb's object, so a place after its source locates the source.
+_FILLING_VERBS = frozenset({"fill", "fill up", "refill", "top up"})
+_LOCATING_PREPS = frozenset({"in", "on", "inside", "at"})
+_SOURCE_PREPS = frozenset({"from", "out of", "off"})
 # "Put out" / "set out" is switching off ("put the candle out") unless a place follows.
 _SETTING_OUT_VERBS = frozenset({"put", "set", "lay"})
 _SET_OUT_PLACES = frozenset({"on", "onto", "in", "into", "by", "beside", "next to", "near",

@@ -178,13 +178,15 @@ def _placement(ctx: Context, grounded: GroundedStep,
         for obj in ctx.objects(ref):
             traits = traits_of(ctx, obj, ref.mention)
             entities = {"obj": obj.id}
+            # Hung on a hook, nail or peg, it is off the floor and out of the way.
             aside = (mention is not None and mention.head in ("wall", "corner", "side")) or any(
                 contains(ctx.text, w) for w in ("out of the way", "to one side",
-                                                 "against the wall"))
+                                                 "against the wall")) or (
+                grounded.step.verb or "").startswith("hang")
             if ctx.place_in(mention, "stairs") and not aside:
                 ctx.add(Level.TASK, _CON, "trip_hazard", f"{obj.label} left on the stairs "
                         "is a fall hazard.", entities, _S.HIGH, _U)
-            elif ctx.place_in(mention, "exit") and grounded.step.destination_prep in (
+            elif ctx.place_in(mention, "exit") and not aside and grounded.step.destination_prep in (
                     "in front of", "against", "by", "at", "next to", "near", "in"):
                 ctx.add(Level.TASK, _CON, "blocked_exit", f"{obj.label} placed at "
                         f"{mention.text if mention else 'the door'} blocks the way out.",

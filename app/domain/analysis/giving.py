@@ -27,6 +27,9 @@ _OWNER_PRONOUNS: dict[str, str | None] = {"her": "female", "his": "male", "him":
 _AGE_SENSITIVE = ("sharp", "hot", "toxic", "medication", "small", "alcohol")
 
 
+_AGE_SPANNING_WORDS = frozenset({"girl", "girls", "boy", "boys", "lad", "lass", "youngster"})
+
+
 def giving_hazards(ctx: Context) -> None:
     """Add the hazards of every non-negated step that hands or serves an object to a person."""
     for grounded in ctx.steps:
@@ -120,8 +123,20 @@ def _give(ctx: Context, grounded: GroundedStep, obj: ObjectView, traits: Traits,
         ctx.add(level, category, hazard, mechanism, entities, severity, preventability,
                 confidence)
 
+    # "the girl", "the boy": a word that fits a five-year-old and a fifteen-year-old alike,
+    # old enough for a blade or a hot mug at one age and not at the other.
+    vague_child = age == "child" and not young and not person.age_stated and (
+        person.role or "").rpartition(" ")[2] in _AGE_SPANNING_WORDS
+    if vague_child and (traits.has("sharp") or traits.has("hot")):
+        ctx.unknown("age", f"how old {person.label} is", critical=True,
+                    why=f"whether a child can safely take {what} depends on their age",
+                    entity=person.id, question=phrase_question("age", person.label))
     if traits.has("sharp"):
-        if child:
+        if vague_child:
+            add("sharp", "sharp_handover", f"Giving {what} to {who}, a child whose age is not "
+                "given: a young child cannot handle it safely.", Severity.CRITICAL, _X,
+                confidence=Confidence.UNCERTAIN)
+        elif child:
             add("sharp", "sharp_handover", f"Giving {what} to {who}, a child who "
                 "cannot handle it safely, risks a deep cut.", Severity.CRITICAL, _U)
         elif age is None:
@@ -132,7 +147,11 @@ def _give(ctx: Context, grounded: GroundedStep, obj: ObjectView, traits: Traits,
                 "must point away and be offered handle first.", Severity.MODERATE, _P)
     if traits.has("hot"):
         confidence = traits.hot_confidence
-        if child:
+        if vague_child:
+            add("hot", "scald_hot_liquid", f"Giving {what}, which is hot, to {who}, a child "
+                "whose age is not given: a young child spills it and is scalded.",
+                Severity.HIGH, _X, confidence=Confidence.UNCERTAIN)
+        elif child:
             add("hot", "scald_hot_liquid", f"Giving {what}, which is hot, to {who}: a child "
                 "cannot be trusted to hold a hot drink and a spill scalds.",
                 Severity.CRITICAL if young else Severity.HIGH, _U, confidence=confidence)

@@ -18,6 +18,7 @@ from app.domain.models import GateRequest, UnknownFact
 
 _TEMPLATES = {
     "age_group": "How old is {0}?",
+    "age": "How old is {0}?",
     "allergies": "Is {0} allergic to {1}?",
     "contents": "What is in {0}?",
     "referent": "Which {0} do you mean: {1}?",

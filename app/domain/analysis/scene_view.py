@@ -80,6 +80,7 @@ class PersonView:
     age_group: str | None = None
     age_level: Level = Level.DEPLOYMENT
     young: bool = False
+    age_stated: bool = False  # an age or age group given, not just implied by "girl", "kid"
     mobility: str | None = None
     cognitive_state: str | None = None
     allergies: tuple[str, ...] | None = None
@@ -243,7 +244,7 @@ def person_view(person: Person, knowledge: Knowledge) -> PersonView:
         young=bool(role and role.young) or age == "infant", mobility=props.get("mobility"),
         cognitive_state=props.get("cognitive_state"),
         allergies=_allergies(props.get("allergies")), gender=role.gender if role else None,
-        properties=dict(props))
+        properties=dict(props), age_stated=bool(age) or props.get("age") is not None)
     if isinstance(props.get("age"), int | float) and not age:
         years = float(props["age"])
         view.age_group = ("infant" if years < 2 else "child" if years < 13 else "teen"
@@ -334,6 +335,7 @@ def _user_view(request: GateRequest, people: dict[str, PersonView], knowledge: K
     if profile is not None:
         if profile.age_group and not person.age_group:
             person.age_group, person.age_level = profile.age_group, Level.USER
+            person.age_stated = True
             person.young = person.young or profile.age_group == "infant"
         if profile.mobility and not person.mobility:
             person.mobility = profile.mobility

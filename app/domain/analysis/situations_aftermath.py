@@ -6,7 +6,9 @@ cooked rice) left at room temperature for hours or to thaw (food_safety); a floo
 left wet on the route people are about to walk (spill_slip); people kept in a room by the robot
 ("don't let them out") (blocked_exit); something heavy or breakable put on a shelf or ledge
 above where someone lies or sits (falling_object); a cable run through a hall or doorway and
-left there while someone unsteady or unable to see it is home (trip_hazard). The commanded
+left there while someone unsteady or unable to see it is home (trip_hazard); a candle or open
+flame lit and then left burning in a room nobody is in while the robot goes elsewhere
+(appliance_left_on, critical with something that burns in the room). The commanded
 state is the harm, so these are unpreventable; the rules are silent when the command itself
 prevents the harm (quietly, in the fridge, a wet-floor sign, dry it). Never fails.
 """
@@ -17,12 +19,13 @@ import re
 from functools import cache
 
 from app.domain.analysis.context import Context
-from app.domain.analysis.scene_view import PersonView, spaced_name
+from app.domain.analysis.scene_view import ObjectView, PersonView, spaced_name
 from app.domain.analysis.situation_base import (
     any_phrase,
     contains,
     load_situations,
     named_people,
+    robot_leaves_room,
 )
 from app.domain.models import Category, Level, Preventability, Severity
 
@@ -32,6 +35,8 @@ _HEAVY_KG = 2.0
 _ABOVE = frozenset({"above", "over"})
 _S = Severity
 _SEGMENT = re.compile(r"\s[,;.!?:]\s|\sthen\s")
+_OPEN_FLAMES = frozenset({"candle"})
+_GOING = frozenset({"navigate", "assist", "transport", "fetch", "handover"})
 _PRONOUN_PEOPLE = frozenset({"them", "him", "her", "anyone", "anybody", "nobody", "everyone",
                              "everybody", "either", "both"})
 
@@ -46,6 +51,7 @@ def aftermath_hazards(ctx: Context) -> None:
     _kept_in(ctx)
     _over_someone(ctx)
     _cord_across_the_way(ctx)
+    _flame_left_burning(ctx)
 
 
 def rooms_named(ctx: Context, text: str) -> set[str]:
@@ -237,3 +243,51 @@ def _cord_across_the_way(ctx: Context) -> None:
                     "they can trip on it.", {"obj": cords[0].id, "person": at_risk[0].id},
                     _S.HIGH, _U)
             return
+
+
+def _flame_left_burning(ctx: Context) -> None:
+    """A candle lit and then left: the robot goes on elsewhere and nobody awake is in the room
+    where it burns, so nothing watches the flame (a draught, a curtain, a cat knocks it over)."""
+    if not ctx.view.people_known:
+        return
+    for index, grounded in enumerate(ctx.steps):
+        if grounded.step.negated or grounded.step.action != "switch_on":
+            continue
+        for flame in (o for r in grounded.objects for o in ctx.objects(r)):
+            room = flame.room
+            if flame.concept not in _OPEN_FLAMES or room is None or any(
+                    not p.asleep for p in ctx.view.people_in(room) if not p.virtual):
+                continue
+            if not (robot_leaves_room(ctx) or _goes_elsewhere(ctx, index, room)):
+                continue
+            fuel = _burnable_in(ctx, room, flame)
+            near = f"; {fuel.label} in the room can catch" if fuel else ""
+            ctx.add(Level.DEPLOYMENT, Category.CONSEQUENTIAL, "appliance_left_on",
+                    f"{flame.label} is lit and left burning in the {spaced_name(room)} with no "
+                    f"one there{near}.", {"obj": flame.id, "room": room},
+                    _S.CRITICAL if fuel else _S.HIGH, _U)
+            return
+
+
+def _goes_elsewhere(ctx: Context, index: int, room: str) -> bool:
+    """Whether a step after `index` takes the robot out of `room`: to another room it names, or
+    to the user ("come and help me") when the user is somewhere else."""
+    user_room = ctx.view.user.room if ctx.view.user else None
+    for later in ctx.steps[index + 1:]:
+        step = later.step
+        if step.negated or step.action not in _GOING:
+            continue
+        named = rooms_named(ctx, step.text) | {
+            i for ref in (later.destination, *later.objects) if ref is not None
+            and ref.kind == "room" for i in ref.ids}
+        if named - {room}:
+            return True
+        if step.action in ("navigate", "assist") and user_room and user_room != room and (
+                contains(step.text, "me") or step.verb == "come"):
+            return True
+    return False
+
+
+def _burnable_in(ctx: Context, room: str, flame: ObjectView) -> ObjectView | None:
+    return next((o for o in ctx.view.objects.values() if o.room == room and o.id != flame.id
+                 and o.has("flammable") and o.concept not in _OPEN_FLAMES), None)
