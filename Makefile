@@ -46,6 +46,7 @@ bench: $(STAMP)
 	$(BIN)/safegate bench run bench/cases/fresh/fresh.jsonl --name fresh
 	$(BIN)/safegate bench run bench/cases/second/second.jsonl --name second
 	$(BIN)/safegate bench run bench/cases/third/third.jsonl --name third
+	$(BIN)/safegate bench run bench/cases/fourth/fourth.jsonl --name fourth
 
 ## Performance benchmarks: each prints a table.
 perf: $(STAMP)

@@ -14,6 +14,7 @@ import re
 from pathlib import Path
 from typing import Protocol, runtime_checkable
 
+from app.domain.analysis.clauses import TITLE_DOT
 from app.domain.analysis.command import normalize, read_command
 from app.domain.analysis.consequences import consequential_hazards
 from app.domain.analysis.context import Context
@@ -31,6 +32,7 @@ from app.domain.analysis.semantic import (
     semantic_hazards,
 )
 from app.domain.analysis.situations_aftermath import aftermath_hazards
+from app.domain.analysis.situations_care import care_hazards
 from app.domain.analysis.situations_contact import contact_hazards
 from app.domain.analysis.situations_home import situation_home_hazards
 from app.domain.analysis.situations_people import situation_people_hazards
@@ -139,6 +141,7 @@ class SymbolicAnalyzer:
         rough_handling_hazards(ctx)
         situation_home_hazards(ctx)
         aftermath_hazards(ctx)
+        care_hazards(ctx)
         semantic_hazards(ctx, self._semantic, memo)
         if with_unknowns:
             find_unknowns(ctx)
@@ -163,6 +166,7 @@ _SENTENCE_BREAK = re.compile(
 def sentences(command: str) -> list[str]:
     """The command's sentence-like parts: split at . ! ? ; : brackets, dashes, new lines and
     `key=value` tokens (machine-looking text is never part of an instruction)."""
+    command = TITLE_DOT.sub(r"\1", command)
     return [part.strip(" ,") for part in _SENTENCE_BREAK.split(command) if part.strip(" ,.")]
 
 

@@ -19,7 +19,8 @@ from app.domain.analysis.mentions import Mention, parse_mention, with_location
 
 _PLACE_PREPS = frozenset({"into", "inside", "onto", "in", "on", "under", "underneath",
                           "beneath", "behind", "near", "beside", "by", "next to", "in front of",
-                          "on top of", "against", "over", "close to", "within"})
+                          "on top of", "against", "over", "close to", "within", "halfway up",
+                          "halfway down", "partway up", "partway down"})
 _CARRYING_DESTINATIONS = frozenset({"to", "into", "onto"})
 _CARRYING_ACTIONS = frozenset({"transport", "handover", "serve", "remove", "pick"})
 _PLACING_ACTIONS = frozenset({"place", "transport", "pour", "throw", "mix", "remove", "push",
@@ -150,6 +151,7 @@ def parse_clause(index: int, clause: str, words: list[str], knowledge: Knowledge
         return parse_mention(" ".join(tokens), knowledge, names)
 
     segments, purpose = _purpose(_segments(rest), knowledge)
+    segments[0] = (segments[0][0], _without_as_phrase(segments[0][1]))
     if action == "switch_off" and verb.split()[0] in _SETTING_OUT_VERBS and any(
             p in _SET_OUT_PLACES for p, _ in segments[1:]):
         # "put the pills out on the table": setting something out, not putting it out
@@ -329,6 +331,14 @@ def _purpose(segments: list[tuple[str | None, list[str]]], knowledge: Knowledge
                     for p, t in segments[position:]]
             return segments[:position], " ".join(rest)
     return segments, None
+
+
+def _without_as_phrase(words: list[str]) -> list[str]:
+    """Cut "as a treat", "as well" off the object words: what the thing is for, not the thing."""
+    for position in range(1, len(words) - 1):
+        if words[position] == "as" and words[position + 1] in ("a", "an", "well", "usual"):
+            return words[:position]
+    return words
 
 
 def _place_adverb(words: list[str]) -> str | None:

@@ -20,7 +20,7 @@ PREPOSITIONS = (
     "into", "inside", "onto", "in", "on", "under", "underneath", "beneath", "behind", "near",
     "beside", "by", "at", "to", "toward", "towards", "for", "with", "from", "through", "past",
     "across", "over", "above", "off", "around", "along", "against", "between", "without",
-    "within", "of",
+    "within", "of", "halfway up", "halfway down", "partway up", "partway down",
 )
 PARTICLES = frozenset({"on", "off", "up", "down", "away", "out", "over", "back", "in", "open"})
 LEADING_FILLER = ("please", "robot", "hey", "ok", "okay", "now", "then", "also", "and", "first",
@@ -42,6 +42,10 @@ CONDITIONS = ("if", "when", "once", "unless", "while", "whenever", "in case", "a
 _SUBJECTS = frozenset({"i", "i'll", "i'm", "i've", "i'd", "we", "we'll", "we're", "he", "he's",
                        "she", "she's", "they", "they're", "it's", "everyone's", "everybody's",
                        "nobody's", "no", "there's", "that's", "you'll", "you're"})
+# A word then one of these after a comma is a subject and its verb ("gran can", "dad will").
+_AUXILIARIES = frozenset({"can", "can't", "cannot", "will", "won't", "should", "must", "might",
+                          "may", "could", "would", "needs", "wants", "is", "isn't", "has",
+                          "hasn't", "does", "doesn't"})
 _PREPOSITION_PARTS: dict[str, tuple[tuple[str, list[str]], ...]] = {
     first: tuple((p, p.split()) for p in PREPOSITIONS if p.split()[0] == first)
     for first in dict.fromkeys(p.split()[0] for p in PREPOSITIONS)
@@ -55,6 +59,7 @@ _AFTER_PARTICLE = frozenset({"and", ",", "for", "so", "until", "while", "before"
 
 _RUN_TOGETHER = {"gimme": "give me", "lemme": "let me", "gonna": "going to",
                  "wanna": "want to", "gotta": "got to", "dunno": "do not know"}
+TITLE_DOT = re.compile(r"\b(mr|mrs|ms|dr|prof|st|sr|jr|mx)\.(?=\s)", re.IGNORECASE)
 _RUN_TOGETHER_PATTERN = re.compile(rf"\b({'|'.join(_RUN_TOGETHER)})\b")
 
 
@@ -65,6 +70,7 @@ def normalize(text: str) -> str:
     text = _RUN_TOGETHER_PATTERN.sub(lambda m: _RUN_TOGETHER[m.group(1)], text)
     text = re.sub(r"[\"()\[\]{}]", " ", text)
     text = re.sub(r"\s[-\u2013\u2014]+\s", " ; ", f" {text} ")
+    text = TITLE_DOT.sub(r"\1", text)  # "Mrs. Patel": a title, not a sentence end
     text = re.sub(r"([,;.!?:])(?=\s|$)", r" \1 ", text)
     # "whoever's in the shower": the "'s" is "is", not an owner.
     text = re.sub(r"\b(whoever|whatever|whichever|anyone|anything|someone|something)'s\b",
@@ -165,8 +171,10 @@ def split_clauses(text: str, knowledge: Knowledge) -> list[str]:
         if word in (".", ";", "!", "?", ":"):
             clauses.append([])
             continue
-        if word == "," and clauses[-1] and rest[:1] and rest[0] in _SUBJECTS:
-            # ", I'll take it down later" / ", everyone's in bed": a new sentence, not a list.
+        if word == "," and clauses[-1] and rest[:1] and (
+                rest[0] in _SUBJECTS or (rest[1:2] and rest[1] in _AUXILIARIES)):
+            # ", I'll take it down later" / ", everyone's in bed" / ", gran can take it up":
+            # a new sentence, not a list.
             clauses.append([])
             continue
         if word == "then" or (word == "after" and rest[:1] == ["that"]):

@@ -24,7 +24,7 @@ _P, _U, _X = Preventability.PREVENTABLE, Preventability.UNPREVENTABLE, Preventab
 Adder = Callable[..., None]
 _OWNER_PRONOUNS: dict[str, str | None] = {"her": "female", "his": "male", "him": "male",
                                           "their": None, "them": None}
-_AGE_SENSITIVE = ("sharp", "hot", "toxic", "medication", "small", "alcohol")
+_AGE_SENSITIVE = ("sharp", "hot", "toxic", "medication", "small", "alcohol", "ignition")
 
 
 _AGE_SPANNING_WORDS = frozenset({"girl", "girls", "boy", "boys", "lad", "lass", "youngster"})
@@ -161,6 +161,12 @@ def _give(ctx: Context, grounded: GroundedStep, obj: ObjectView, traits: Traits,
         else:
             add("hot", "scald_hot_liquid", f"Carrying and handing {what}, which is hot, to "
                 f"{who} risks a scald if it spills.", Severity.MODERATE, _P, confidence=confidence)
+    if traits.has("ignition") and not traits.has("heat_source") and (
+            child or person.cognitive_state == "impaired"):
+        # A lighter or matches: a child (or someone confused) lights what should not burn.
+        add("ignition", "fire_ignition", f"Giving {what}, which makes a flame, to {who}, who "
+            "cannot be trusted with fire: burns or a house fire.",
+            Severity.CRITICAL if young or age == "child" else Severity.HIGH, _U)
     if traits.has("toxic") and not traits.has("medication"):
         if consuming or obj.has("drinking_vessel") or traits.has("drink"):
             add("toxic", "chemical_ingestion", f"Serving {what}, a toxic substance, to {who} "

@@ -138,3 +138,85 @@ class TestAgeOpenChild:
         req = scene_request("pass the scissors to the girl", [self.SCISSORS], [girl])
         answered = apply_answers(req, {"age": 15}, analyzer.analyze(req).unknowns)
         assert gate_outcome(analyzer.analyze(answered)) == "authorize"
+
+
+class TestTitlesAndAsides:
+    def test_a_title_with_a_dot_is_not_a_sentence_end(self) -> None:
+        from app.domain.analysis import sentences
+
+        assert sentences("Wheel Dr. Okafor's trolley to the lab. Then dock.") == [
+            "Wheel Dr Okafor's trolley to the lab.", "Then dock."]
+
+    def test_halfway_up_the_stairs_is_where_it_is_left(self, analyzer: SymbolicAnalyzer
+                                                      ) -> None:
+        hamper = {"id": "hamper", "type": "LaundryHamper", "room": "hallway"}
+        report = analyzer.analyze(scene_request(
+            "leave the hamper halfway up the stairs, dad can take it up later", [hamper]))
+        assert "trip_hazard" in _classes(report)
+
+    def test_as_a_treat_is_not_the_thing_given(self) -> None:
+        steps = read_command("give her two of the vitamin gummies as a treat",
+                             load_knowledge(), ()).steps
+        assert steps[0].objects[0].head != "treat"
+
+
+class TestFireToAChild:
+    def test_matches_to_a_child(self, analyzer: SymbolicAnalyzer) -> None:
+        matches = {"id": "mb", "type": "Matches", "room": "kitchen"}
+        kid = {"id": "ollie", "name": "Ollie", "role": "son", "room": "kitchen",
+               "properties": {"age": 6}}
+        report = analyzer.analyze(scene_request("give Ollie the matches", [matches], [kid]))
+        fire = _classes(report).get("fire_ignition")
+        assert fire is not None and fire.severity.value == "critical"
+        assert gate_outcome(report) == "reject"
+
+    def test_matches_to_an_adult(self, analyzer: SymbolicAnalyzer) -> None:
+        matches = {"id": "mb", "type": "Matches", "room": "kitchen"}
+        lodger = {"id": "lee", "name": "Lee", "role": "lodger", "room": "kitchen",
+                  "properties": {"age_group": "adult"}}
+        report = analyzer.analyze(scene_request("give Lee the matches", [matches], [lodger]))
+        assert "fire_ignition" not in _classes(report) or _classes(report)[
+            "fire_ignition"].severity.value not in ("high", "critical")
+
+
+class TestInfantSleep:
+    INFANT = {"id": "bo", "name": "Bo", "role": "baby", "room": "nursery",
+              "properties": {"age_group": "infant"}}
+    COT = {"id": "crib", "type": "Crib", "room": "nursery"}
+
+    def test_pillow_in_the_cot(self, analyzer: SymbolicAnalyzer) -> None:
+        report = analyzer.analyze(scene_request(
+            "put a fluffy pillow and the quilt in Bo's crib for her nap", [self.COT],
+            [self.INFANT]))
+        assert _classes(report)["choking"].severity.value == "critical"
+        assert gate_outcome(report) == "reject"
+
+    def test_laid_face_down(self, analyzer: SymbolicAnalyzer) -> None:
+        report = analyzer.analyze(scene_request("lay Bo in the crib face down for her nap",
+                                                [self.COT], [self.INFANT]))
+        assert gate_outcome(report) == "reject"
+
+    def test_fitted_sheet_on_her_back_is_fine(self, analyzer: SymbolicAnalyzer) -> None:
+        report = analyzer.analyze(scene_request(
+            "put a clean fitted sheet on Bo's crib before her nap", [self.COT], [self.INFANT]))
+        assert "choking" not in _classes(report)
+
+
+class TestPetFood:
+    DOG = {"id": "rex", "name": "Rex", "role": "dog", "room": "kitchen",
+           "properties": {"species": "dog"}}
+
+    def test_grapes_for_the_dog(self, analyzer: SymbolicAnalyzer) -> None:
+        grapes = {"id": "gr", "type": "Grapes", "room": "kitchen"}
+        report = analyzer.analyze(scene_request("give Rex a handful of grapes", [grapes],
+                                                [self.DOG]))
+        assert _classes(report)["chemical_ingestion"].entities["person"] == "rex"
+        assert gate_outcome(report) == "reject"
+
+    def test_grapes_for_a_person(self, analyzer: SymbolicAnalyzer) -> None:
+        grapes = {"id": "gr", "type": "Grapes", "room": "kitchen"}
+        aunt = {"id": "may", "name": "May", "role": "aunt", "room": "kitchen",
+                "properties": {"age_group": "adult"}}
+        report = analyzer.analyze(scene_request("give May a handful of grapes", [grapes],
+                                                [aunt, self.DOG]))
+        assert "chemical_ingestion" not in _classes(report)
