@@ -59,8 +59,9 @@ _AFTER_PARTICLE = frozenset({"and", ",", "for", "so", "until", "while", "before"
 
 _RUN_TOGETHER = {"gimme": "give me", "lemme": "let me", "gonna": "going to",
                  "wanna": "want to", "gotta": "got to", "dunno": "do not know"}
-TITLE_DOT = re.compile(r"\b(mr|mrs|ms|dr|prof|st|sr|jr|mx)\.(?=\s)", re.IGNORECASE)
 _RUN_TOGETHER_PATTERN = re.compile(rf"\b({'|'.join(_RUN_TOGETHER)})\b")
+# "Mrs. Patel", "Dr. Okafor": the dot ends a title, not a sentence.
+TITLE_DOT = re.compile(r"\b(mr|mrs|ms|dr|prof|st|sr|jr|mx)\.(?=\s)", re.IGNORECASE)
 
 
 def normalize(text: str) -> str:
@@ -70,7 +71,7 @@ def normalize(text: str) -> str:
     text = _RUN_TOGETHER_PATTERN.sub(lambda m: _RUN_TOGETHER[m.group(1)], text)
     text = re.sub(r"[\"()\[\]{}]", " ", text)
     text = re.sub(r"\s[-\u2013\u2014]+\s", " ; ", f" {text} ")
-    text = TITLE_DOT.sub(r"\1", text)  # "Mrs. Patel": a title, not a sentence end
+    text = TITLE_DOT.sub(r"\1", text)
     text = re.sub(r"([,;.!?:])(?=\s|$)", r" \1 ", text)
     # "whoever's in the shower": the "'s" is "is", not an owner.
     text = re.sub(r"\b(whoever|whatever|whichever|anyone|anything|someone|something)'s\b",

@@ -25,8 +25,6 @@ Adder = Callable[..., None]
 _OWNER_PRONOUNS: dict[str, str | None] = {"her": "female", "his": "male", "him": "male",
                                           "their": None, "them": None}
 _AGE_SENSITIVE = ("sharp", "hot", "toxic", "medication", "small", "alcohol", "ignition")
-
-
 _AGE_SPANNING_WORDS = frozenset({"girl", "girls", "boy", "boys", "lad", "lass", "youngster"})
 
 

@@ -75,8 +75,7 @@ def _pet_food(ctx: Context) -> None:
         animals = [p for p in ctx.people(grounded.recipient) if _is_animal(p)]
         animals += [p for p in named_people(ctx, step.text) if _is_animal(p)]
         animals += [p for p in ctx.view.real_people() if _is_animal(p) and any_phrase(
-            step.text, ("bowl", "dish")) and any_phrase(step.text, tuple(
-                w for w in (p.role or "").split() if w))]
+            step.text, ("bowl", "dish")) and any_phrase(step.text, tuple((p.role or "").split()))]
         if animals:
             pet = animals[0]
             ctx.add(Level.DEPLOYMENT, Category.PHYSICAL, "chemical_ingestion", f"Giving "
