@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterable, Mapping, Sequence
 
-from pydantic import BaseModel, ConfigDict
+from pydantic import BaseModel, ConfigDict, field_serializer
 
 from app.domain.models import HazardProposal, HazardReport, HazardTemplate, VariableType
 
@@ -36,6 +36,11 @@ class BoundTemplate(BaseModel):
     template: HazardTemplate
     bindings: dict[str, BindingValue]
     entity_variables: frozenset[str]
+
+    @field_serializer("entity_variables")
+    def _sorted(self, names: frozenset[str]) -> list[str]:
+        # A set's order changes with the process's hash seed; a dump must not.
+        return sorted(names)
 
 
 class BoundHazard(BaseModel):

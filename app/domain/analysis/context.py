@@ -116,10 +116,12 @@ class Context:
         """Rooms on the shortest known route (both ends included); just the ends if unknown."""
         if not start or not end or start == end:
             return [r for r in (start, end) if r]
-        graph: dict[str, set[str]] = {}
+        # Neighbours in scene order (dicts, not sets): when two routes are equally short, the
+        # same one is taken in every process, whatever the hash seed.
+        graph: dict[str, dict[str, None]] = {}
         for a, b in self.view.connections:
-            graph.setdefault(a, set()).add(b)
-            graph.setdefault(b, set()).add(a)
+            graph.setdefault(a, {})[b] = None
+            graph.setdefault(b, {})[a] = None
         previous: dict[str, str | None] = {start: None}
         queue = deque([start])
         while queue:

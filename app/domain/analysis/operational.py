@@ -288,7 +288,7 @@ def _people_on_way(ctx: Context, grounded: GroundedStep, *, everywhere: bool = F
         rooms |= {p.room for r in (grounded.target, *grounded.objects) for p in ctx.people(r)
                   if p.room}
     rooms |= {p.room for p in ctx.people(grounded.recipient) if p.room}
-    found = [p for room in rooms for p in ctx.view.people_in(room)]
+    found = [p for room in sorted(rooms) for p in ctx.view.people_in(room)]
     found += [p for r in (*grounded.objects, grounded.recipient, grounded.target)
               for p in ctx.people(r) if not p.is_user]
     return list({p.id: p for p in found}.values())
