@@ -66,10 +66,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.settings = resolved
     problems.install(app)
     observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes)
+    # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.
+    # Routes are matched in order, so the robot's hot path (POST /gate) comes first.
+    for router in (gate.router, verify.router, monitor.router):
+        app.include_router(router, dependencies=[Depends(robot_writes)])
     for router in (health.router, contracts.router, templates.router, vocabulary.router,
                    extensions.router, keys.router, curator.router):
         app.include_router(router)
-    # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.
-    for router in (gate.router, verify.router, monitor.router):
-        app.include_router(router, dependencies=[Depends(robot_writes)])
     return app

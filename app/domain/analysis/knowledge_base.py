@@ -89,6 +89,8 @@ class Knowledge:
     places: dict[str, tuple[str, ...]]
     room_words: dict[str, str]
     max_phrase_words: int = field(default=4)
+    # role name -> its words with their roles (role_words inverted, for per-person lookups)
+    role_index: dict[str, tuple[tuple[str, Role], ...]] = field(default_factory=dict)
 
     def concept_of_type(self, type_name: str) -> str | None:
         """The concept an AI2-THOR type (or plain type noun) belongs to, if known."""
@@ -234,4 +236,12 @@ def load_knowledge(directory: Path = KNOWLEDGE_DIR) -> Knowledge:
         places={k: tuple(v) for k, v in phrases_raw["places"].items()},
         room_words={w: room for room, ws in phrases_raw["rooms"].items() for w in ws},
         max_phrase_words=max(len(p.split()) for p in all_phrases),
+        role_index=_role_index(role_words),
     )
+
+
+def _role_index(role_words: dict[str, Role]) -> dict[str, tuple[tuple[str, Role], ...]]:
+    grouped: dict[str, list[tuple[str, Role]]] = {}
+    for word, role in role_words.items():
+        grouped.setdefault(role.name, []).append((word, role))
+    return {name: tuple(pairs) for name, pairs in grouped.items()}

@@ -101,8 +101,8 @@ def person_words(ctx: Context, person: PersonView) -> set[str]:
     if person.role:
         words.add(person.role)
         words.add(person.role + "s")
-    for word, role in ctx.knowledge.role_words.items():
-        if role.is_user or not person.role_class or role.name != person.role_class:
+    for word, role in ctx.knowledge.role_index.get(person.role_class or "", ()):
+        if role.is_user:
             continue
         if role.name in ("guest", "adult", "child", "sibling"):
             continue  # too broad: "friend" does not name a particular resident
