@@ -27,7 +27,8 @@ _DETERMINERS = frozenset({"the", "a", "an", "his", "her", "their", "my", "your",
 _NOTE_PLACES = frozenset({"in", "into", "on", "onto", "under", "underneath", "back", "inside",
                           "by", "beside", "next", "near", "behind", "out"})
 _NOUN_ENDS = frozenset({",", ";", "and", "from", "in", "on", "to", "with", "for", "of"})
-_FORMS: dict[str, tuple[str, ...]] = {}  # a word's base forms, memoised (pure, bounded by use)
+_FORMS: dict[str, tuple[str, ...]] = {}  # a word and its base forms, memoised (pure)
+_FORMS_LIMIT = 50_000  # cleared when full, so novel words in requests cannot grow it forever
 _SUBJECT_PRONOUNS = frozenset({"i", "we", "you", "he", "she", "they", "it", "there"})
 _BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been", "has", "have", "had", "will",
                        "can", "could", "would", "should", "might", "must", "does", "did"})
@@ -106,7 +107,10 @@ def _chain(words: list[str], language: Language, knowledge: Knowledge
 
 
 def _apply_rules(words: list[str], language: Language) -> list[str]:
-    for pattern, replacement in language.rewrites:
+    for (pattern, replacement), opener in zip(language.rewrites, language.rewrite_openers,
+                                              strict=True):
+        if opener is not None and (not words or opener.isdisjoint(_forms(words[0], language))):
+            continue
         captures = _match(pattern, 0, words, 0, language)
         if captures is None:
             continue
@@ -158,16 +162,24 @@ def _match(pattern: tuple[str, ...], p_index: int, words: list[str], w_index: in
 def _word_fits(token: str, word: str, language: Language) -> bool:
     if token == "#":
         return any(ch.isdigit() for ch in word)
+    allowed = _accepted(token, language)
+    return word in allowed or not allowed.isdisjoint(_forms(word, language))
+
+
+def _accepted(token: str, language: Language) -> frozenset[str]:
     if token.startswith("@"):
-        allowed = language.word_sets.get(token[1:], frozenset())
-    else:
-        allowed = _alternatives(token)
-    if word in allowed:
-        return True
+        return language.word_sets.get(token[1:], frozenset())
+    return _alternatives(token)
+
+
+def _forms(word: str, language: Language) -> tuple[str, ...]:
+    """The word and its base forms (memoised: pure, bounded by the words seen)."""
     forms = _FORMS.get(word)
     if forms is None:
-        forms = _FORMS[word] = tuple(language.base_forms(word)[1:])
-    return any(form in allowed for form in forms)
+        if len(_FORMS) >= _FORMS_LIMIT:
+            _FORMS.clear()
+        forms = _FORMS[word] = tuple(language.base_forms(word))
+    return forms
 
 
 @lru_cache(maxsize=1024)

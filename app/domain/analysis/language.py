@@ -44,6 +44,9 @@ class Language:
 
     word_sets: dict[str, frozenset[str]]
     rewrites: tuple[tuple[tuple[str, ...], tuple[str, ...]], ...]
+    # Per rewrite, the words its first token accepts (None: a slot, a number or optional), so
+    # a clause skips the rules that cannot open it without trying them.
+    rewrite_openers: tuple[frozenset[str] | None, ...]
     action_nouns: dict[str, str]
     chain_verbs: frozenset[str]
     aspect_verbs: tuple[str, ...]
@@ -94,6 +97,16 @@ def _read(directory: Path, name: str) -> Any:
     return json.loads((directory / name).read_text(encoding="utf-8"))
 
 
+def token_words(token: str, word_sets: dict[str, frozenset[str]]) -> frozenset[str] | None:
+    """The words a rewrite pattern's token accepts: `@name` a word set, `a|b` alternatives;
+    None for the tokens that are not word lists (`X` a slot, `#` a number, `END`)."""
+    if token in ("X", "#", "END"):
+        return None
+    if token.startswith("@"):
+        return word_sets.get(token[1:], frozenset())
+    return frozenset(token.split("|"))
+
+
 @cache
 def load_language(directory: Path = KNOWLEDGE_DIR) -> Language:
     """Read `language.json` and `english_words.json` from `directory` (cached per directory).
@@ -107,10 +120,15 @@ def load_language(directory: Path = KNOWLEDGE_DIR) -> Language:
     raw = _read(directory, "language.json")
     english = _read(directory, "english_words.json")
     function_words = frozenset(raw["function_words"]["words"])
+    word_sets = {name: frozenset(words) for name, words in raw["word_sets"].items()}
+    rewrites = tuple((tuple(pattern.split()), tuple(replacement.split()))
+                     for pattern, replacement in raw["rewrites"])
     return Language(
-        word_sets={name: frozenset(words) for name, words in raw["word_sets"].items()},
-        rewrites=tuple((tuple(pattern.split()), tuple(replacement.split()))
-                       for pattern, replacement in raw["rewrites"]),
+        word_sets=word_sets,
+        rewrites=rewrites,
+        rewrite_openers=tuple(
+            None if pattern[0].endswith("?") else token_words(pattern[0], word_sets)
+            for pattern, _ in rewrites),
         action_nouns=dict(raw["action_nouns"]["words"]),
         chain_verbs=frozenset(raw["chain_verbs"]["words"]),
         aspect_verbs=tuple(raw["aspect_verbs"]["words"]),
