@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Protocol, runtime_checkable
 
 from app.domain.analysis.clauses import TITLE_DOT
-from app.domain.analysis.command import normalize, read_command
+from app.domain.analysis.command import read_command
 from app.domain.analysis.consequences import consequential_hazards
 from app.domain.analysis.context import Context
 from app.domain.analysis.giving import giving_hazards
@@ -129,7 +129,7 @@ class SymbolicAnalyzer:
         grounded = [grounder.ground(step) for step in steps]
         apply_state_clauses(grounder, grounded, view, knowledge)
         ctx = Context(request=request, knowledge=knowledge, view=view, steps=grounded,
-                      text=normalize(request.command), analyzer=self.name, parsed=parsed,
+                      text=parsed.text, analyzer=self.name, parsed=parsed,
                       ambiguous_ids=_ambiguous_ids(grounded))
         giving_hazards(ctx)
         handling_hazards(ctx)

@@ -62,6 +62,11 @@ _RUN_TOGETHER = {"gimme": "give me", "lemme": "let me", "gonna": "going to",
 _RUN_TOGETHER_PATTERN = re.compile(rf"\b({'|'.join(_RUN_TOGETHER)})\b")
 # "Mrs. Patel", "Dr. Okafor": the dot ends a title, not a sentence.
 TITLE_DOT = re.compile(r"\b(mr|mrs|ms|dr|prof|st|sr|jr|mx)\.(?=\s)", re.IGNORECASE)
+_BRACKETS = re.compile(r"[\"()\[\]{}]")
+_DASH = re.compile(r"\s[-\u2013\u2014]+\s")
+_PUNCTUATION = re.compile(r"([,;.!?:])(?=\s|$)")
+# "whoever's in the shower": the "'s" is "is", not an owner.
+_PRONOUN_IS = re.compile(r"\b(whoever|whatever|whichever|anyone|anything|someone|something)'s\b")
 
 
 def normalize(text: str) -> str:
@@ -69,28 +74,33 @@ def normalize(text: str) -> str:
     separate tokens, single spaces."""
     text = text.lower().replace("\u2019", "'").replace("\u2018", "'")
     text = _RUN_TOGETHER_PATTERN.sub(lambda m: _RUN_TOGETHER[m.group(1)], text)
-    text = re.sub(r"[\"()\[\]{}]", " ", text)
-    text = re.sub(r"\s[-\u2013\u2014]+\s", " ; ", f" {text} ")
+    text = _BRACKETS.sub(" ", text)
+    text = _DASH.sub(" ; ", f" {text} ")
     text = TITLE_DOT.sub(r"\1", text)
-    text = re.sub(r"([,;.!?:])(?=\s|$)", r" \1 ", text)
-    # "whoever's in the shower": the "'s" is "is", not an owner.
-    text = re.sub(r"\b(whoever|whatever|whichever|anyone|anything|someone|something)'s\b",
-                  r"\1", text)
+    text = _PUNCTUATION.sub(r" \1 ", text)
+    text = _PRONOUN_IS.sub(r"\1", text)
     return " ".join(text.split())
 
 
 def strip_leading(words: list[str], phrases: tuple[str, ...]) -> tuple[list[str], str | None]:
     """Remove the longest of `phrases` that opens `words`; also return which one (or None)."""
-    for phrase, parts in _longest_first(phrases):
+    if not words:
+        return words, None
+    for phrase, parts in _by_first_word(phrases).get(words[0], ()):
         if words[: len(parts)] == parts:
             return words[len(parts):], phrase
     return words, None
 
 
 @lru_cache(maxsize=256)
-def _longest_first(phrases: tuple[str, ...]) -> tuple[tuple[str, list[str]], ...]:
-    # The phrase tables are constants, so each is sorted and split once, not on every clause.
-    return tuple((phrase, phrase.split()) for phrase in sorted(phrases, key=len, reverse=True))
+def _by_first_word(phrases: tuple[str, ...]) -> dict[str, tuple[tuple[str, list[str]], ...]]:
+    # The phrase tables are constants, so each is grouped by first word, longest first, once.
+    grouped: dict[str, list[tuple[str, list[str]]]] = {}
+    for phrase in sorted(phrases, key=len, reverse=True):
+        parts = phrase.split()
+        if parts:
+            grouped.setdefault(parts[0], []).append((phrase, parts))
+    return {word: tuple(found) for word, found in grouped.items()}
 
 
 def preposition_parts() -> dict[str, tuple[tuple[str, list[str]], ...]]:

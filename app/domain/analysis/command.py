@@ -64,6 +64,7 @@ class ParsedCommand:
 
     steps: tuple[Step, ...]
     facts: CommandFacts
+    text: str = ""  # the command as `normalize` gives it
     not_understood: tuple[Gap, ...] = ()
     devices: dict[int, str] = field(default_factory=dict)
 
@@ -151,7 +152,7 @@ def read_command(command: str, knowledge: Knowledge, names: Collection[str] = ()
             pending_condition = None
     facts = command_facts(text, steps, language, chained=chained, repeated=repeated)
     return ParsedCommand(
-        steps=tuple(steps), facts=facts,
+        steps=tuple(steps), facts=facts, text=text,
         not_understood=find_gaps(steps, words_by_step, knowledge, language, names),
         devices=_implied_devices(steps, knowledge, language))
 
