@@ -116,7 +116,7 @@ class SemanticMatcher:
         # One matrix-vector product per text: a matrix product over several texts is large
         # enough for OpenBLAS to wake its thread pool, which spins on the other cores and costs
         # more CPU than the product itself.
-        similarities = self._vectors @ self.encoder.encode([text])[0]
+        similarities = self._vectors @ self.encoder.encode_one(text)
         unsafe = similarities[:self._unsafe_count]
         best = int(unsafe.argmax())
         benign = (float(similarities[self._unsafe_count:].max())
