@@ -21,6 +21,7 @@ from functools import cache
 
 from app.domain.analysis.clause_roles import Step
 from app.domain.analysis.language import Language
+from app.domain.analysis.word_filter import may_occur
 
 _CLOCK = re.compile(r"(?<![\w'])(\d{1,2})(?::(\d\d))? ?(am|pm|a\.m\.|p\.m\.|o'clock)(?![\w'])")
 _AWAY_ACTIONS = frozenset({"navigate"})
@@ -92,7 +93,9 @@ def _pattern(phrases: tuple[str, ...]) -> re.Pattern[str]:
 
 
 def _first(text: str, phrases: tuple[str, ...]) -> str | None:
-    found = _pattern(phrases).search(text) if phrases else None
+    if not phrases or not may_occur(text, phrases):
+        return None
+    found = _pattern(phrases).search(text)
     return found.group(0) if found else None
 
 

@@ -76,7 +76,8 @@ class PhraseEncoder:
         """`encode([text])[0]` with a handful of array operations instead of a dozen: the
         analyzer embeds one clause at a time (see `SemanticMatcher._match`)."""
         if not self._direct:
-            return self.encode([text])[0]
+            row: Vectors = self.encode([text])[0]
+            return row
         ids = [i for word in text.split() for i in self._word_pieces(word)]
         if not ids:
             return np.zeros(self.dim, dtype=np.float32)

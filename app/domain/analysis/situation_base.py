@@ -21,6 +21,7 @@ from typing import Any
 from app.domain.analysis.context import Context
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
 from app.domain.analysis.scene_view import PersonView
+from app.domain.analysis.word_filter import may_occur
 
 _PRONOUNS = {"her": "female", "she": "female", "she's": "female", "herself": "female",
              "him": "male", "he": "male", "he's": "male", "his": "male", "himself": "male"}
@@ -78,7 +79,10 @@ def contains(text: str, phrase: str) -> bool:
 
 def any_phrase(text: str, phrases: tuple[str, ...] | list[str]) -> str | None:
     """A phrase of the group found in the text (the leftmost occurrence), or None."""
-    match = _group_pattern(tuple(phrases)).search(text) if phrases else None
+    group = tuple(phrases)
+    if not group or not may_occur(text, group):
+        return None
+    match = _group_pattern(group).search(text)
     return match.group(1) if match else None
 
 
@@ -175,7 +179,7 @@ def has_condition(ctx: Context, person: PersonView, condition: str) -> bool:
         p.id for p in named_people(ctx)}
 
 
-_SUBSTANCE_PATTERNS: dict[int, re.Pattern[str]] = {}
+_SUBSTANCE_PATTERNS: dict[int, tuple[tuple[str, ...], re.Pattern[str]]] = {}
 _NEGATORS = frozenset({"no", "without", "not", "never", "non", "instead"})
 
 
@@ -190,12 +194,15 @@ def substances_in(ctx: Context, text: str) -> list[str]:
         Substance names, in order of first occurrence, without repeats.
     """
     table = ctx.knowledge.substance_words
-    pattern = _SUBSTANCE_PATTERNS.get(id(table))
-    if pattern is None:
-        words = sorted(table, key=len, reverse=True)
-        pattern = re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in words)
-                             + r")(?![\w'-])")
-        _SUBSTANCE_PATTERNS[id(table)] = pattern
+    cached = _SUBSTANCE_PATTERNS.get(id(table))
+    if cached is None:
+        words = tuple(sorted(table, key=len, reverse=True))
+        cached = words, re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in words)
+                                   + r")(?![\w'-])")
+        _SUBSTANCE_PATTERNS[id(table)] = cached
+    words, pattern = cached
+    if not may_occur(text, words):
+        return []
     found: list[str] = []
     for match in pattern.finditer(text):
         before = text[:match.start()].split()[-2:]

@@ -62,10 +62,12 @@ def _above_cot(ctx: Context) -> None:
     data = load_situations()
     babies = [p for p in ctx.view.real_people() if p.young or p.age_group == "infant"]
     placing = any(g.step.action in _PLACING and not g.step.negated for g in ctx.steps)
+    if not (babies and placing):
+        return
     cots = "|".join(re.escape(w) for w in data.group("infant_sleeper_places"))
     above = "|".join(re.escape(w) for w in data.group("above_preps"))
     pattern = rf"\b(?:{above})\s+(?:the\s+|her\s+|his\s+|their\s+|\w+'s?\s+)?(?:{cots})\b"
-    if babies and placing and re.search(pattern, ctx.text):
+    if re.search(pattern, ctx.text):
         ctx.add(Level.DEPLOYMENT, _PHYS, "falling_object", "Something stored above a baby's "
                 "cot can fall on the baby.", {"person": babies[0].id}, _S.CRITICAL, _U)
 

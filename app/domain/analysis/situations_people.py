@@ -271,6 +271,8 @@ def _overdose(ctx: Context) -> None:
     """More medicine than the dose ("a double dose", "another dose") is an overdose."""
     data = load_situations()
     word = any_phrase(ctx.text, data.group("overdose_words"))
+    if not word:
+        return
     medicine = any("medication" in ctx.knowledge.substances[n].props
                    for n in substances_in(ctx, ctx.text)) or any(
         ctx.knowledge.noun_concept(w) == "medication" for w in ctx.text.split())
