@@ -21,7 +21,7 @@ from typing import Any
 from app.domain.analysis.context import Context
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
 from app.domain.analysis.scene_view import PersonView
-from app.domain.analysis.word_filter import may_occur
+from app.domain.analysis.word_filter import candidates, may_occur
 
 _PRONOUNS = {"her": "female", "she": "female", "she's": "female", "herself": "female",
              "him": "male", "he": "male", "he's": "male", "his": "male", "himself": "male"}
@@ -77,6 +77,11 @@ def contains(text: str, phrase: str) -> bool:
     return any(f" {phrase}{tail} " in padded for tail in ("", "'s", "'"))
 
 
+def contained(text: str, phrases: tuple[str, ...]) -> list[str]:
+    """The phrases of the group that `contains` finds in the text, in group order."""
+    return [phrase for phrase in candidates(text, phrases) if contains(text, phrase)]
+
+
 def any_phrase(text: str, phrases: tuple[str, ...] | list[str]) -> str | None:
     """A phrase of the group found in the text (the leftmost occurrence), or None."""
     group = tuple(phrases)
@@ -128,7 +133,7 @@ def named_people(ctx: Context, text: str | None = None) -> list[PersonView]:
     """
     text = ctx.text if text is None else text
     people = [p for p in ctx.view.real_people() if not p.is_user]
-    if any(contains(text, w) for w in _GROUP_WORDS):
+    if contained(text, _GROUP_WORDS):
         return people
     found = [p for p in people if any(contains(text, w) for w in person_words(ctx, p))]
     if found:
@@ -173,9 +178,9 @@ def has_condition(ctx: Context, person: PersonView, condition: str) -> bool:
         value = props.get(key)
         values += value if isinstance(value, list) else [value] if value else []
     listed = " ".join(str(v).lower() for v in values)
-    if any(contains(listed, w) for w in (*record["words"], *record["properties"])):
+    if contained(listed, (*record["words"], *record["properties"])):
         return True
-    return any(contains(ctx.text, w) for w in record["words"]) and person.id in {
+    return bool(contained(ctx.text, tuple(record["words"]))) and person.id in {
         p.id for p in named_people(ctx)}
 
 

@@ -18,6 +18,7 @@ from app.domain.analysis.grounding import GroundedStep
 from app.domain.analysis.scene_view import PersonView
 from app.domain.analysis.situation_base import (
     any_phrase,
+    contained,
     contains,
     has_condition,
     is_softened,
@@ -80,7 +81,7 @@ def _foods(ctx: Context, group: str) -> list[str]:
     data = load_situations()
     words = data.group(group)
     softening = data.group("softening_words")
-    return [w for w in words if contains(ctx.text, w) and not is_softened(ctx.text, w, softening)]
+    return [w for w in contained(ctx.text, words) if not is_softened(ctx.text, w, softening)]
 
 
 def _swallowing(ctx: Context) -> None:

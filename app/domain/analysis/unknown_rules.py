@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
+from app.domain.analysis.word_filter import candidates
 
 _TOKEN = re.compile(r"[\w'-]+")
 
@@ -73,18 +74,12 @@ def has_phrase(text: str, phrases: Iterable[str]) -> str | None:
         The matching phrase, or None.
     """
     padded = _padded(text)
-    if isinstance(phrases, tuple):
-        # The rule tables are tuples: their padded forms are made once, not per call.
-        return next((phrase for phrase, key in _padded_group(phrases) if key in padded), None)
-    for phrase in phrases:
+    # The rule tables are tuples: only the phrases whose first word the text has are tried.
+    possible = candidates(text, phrases) if isinstance(phrases, tuple) else phrases
+    for phrase in possible:
         if _padded(phrase) in padded:
             return phrase
     return None
-
-
-@lru_cache(maxsize=1024)
-def _padded_group(phrases: tuple[str, ...]) -> tuple[tuple[str, str], ...]:
-    return tuple((phrase, _padded(phrase)) for phrase in phrases)
 
 
 @lru_cache(maxsize=8192)

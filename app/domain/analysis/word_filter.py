@@ -1,9 +1,10 @@
 """A cheap test that rules a phrase group out of a text before any regular expression runs.
 
-In: a text and a tuple of phrases. Out: False when no phrase of the group can occur in the text
-as whole words, True when one might (the caller's own pattern then decides). The rules ask
-dozens of phrase groups of every command and almost all of them are absent, so this set test
-replaces most of the alternation searches.
+In: a text and a tuple of phrases. Out: `may_occur`, False when no phrase of the group can occur
+in the text as whole words, True when one might (the caller's own test then decides);
+`candidates`, the phrases of the group that might, in group order. The rules ask dozens of
+phrase groups of every command and almost all of them are absent, so these set tests replace
+most of the searches.
 
 Why it is exact: a whole-word match (not preceded by a letter, digit, underscore or apostrophe)
 starts where one of the text's word runs (`\\w+`) starts, and a phrase's own leading word run
@@ -27,6 +28,16 @@ def may_occur(text: str, phrases: tuple[str, ...]) -> bool:
     return leading is None or not leading.isdisjoint(_word_runs(text))
 
 
+def candidates(text: str, phrases: tuple[str, ...]) -> tuple[str, ...]:
+    """The phrases of the group that could occur in `text` as whole words, in group order."""
+    by_word, unfiltered = _phrases_by_leading_word(phrases)
+    hits = _word_runs(text) & by_word.keys()
+    if not hits:
+        return unfiltered
+    found = {phrase for word in hits for phrase in by_word[word]}.union(unfiltered)
+    return tuple(phrase for phrase in phrases if phrase in found)
+
+
 @lru_cache(maxsize=4096)
 def _word_runs(text: str) -> frozenset[str]:
     return frozenset(_WORD_RUN.findall(text))
@@ -41,3 +52,19 @@ def _leading_words(phrases: tuple[str, ...]) -> frozenset[str] | None:
             return None
         leading.add(found.group(0))
     return frozenset(leading)
+
+
+@lru_cache(maxsize=2048)
+def _phrases_by_leading_word(phrases: tuple[str, ...]
+                             ) -> tuple[dict[str, tuple[str, ...]], tuple[str, ...]]:
+    """The group's phrases by leading word run, and those with none (never filtered out)."""
+    grouped: dict[str, list[str]] = {}
+    unfiltered: list[str] = []
+    for phrase in phrases:
+        found = _LEADING_RUN.match(phrase)
+        word = found.group(0) if found else ""
+        if word:
+            grouped.setdefault(word, []).append(phrase)
+        else:
+            unfiltered.append(phrase)
+    return {w: tuple(ps) for w, ps in grouped.items()}, tuple(unfiltered)

@@ -1,4 +1,4 @@
-"""The word filter may only rule out a phrase group that the whole-word patterns would not find."""
+"""The word filter may only rule out phrases that the whole-word tests would not find."""
 
 from __future__ import annotations
 
@@ -7,8 +7,9 @@ import re
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.domain.analysis.situation_base import any_phrase, load_situations
-from app.domain.analysis.word_filter import may_occur
+from app.domain.analysis.situation_base import any_phrase, contains, load_situations
+from app.domain.analysis.unknown_rules import has_phrase
+from app.domain.analysis.word_filter import candidates, may_occur
 
 _GROUPS = [group for group in load_situations().phrases.values() if group]
 _PIECES = st.sampled_from(
@@ -30,6 +31,23 @@ def test_a_group_ruled_out_is_never_found(group: tuple[str, ...], pieces: list[s
     if not may_occur(text, group):
         assert _whole_word(group).search(text) is None
         assert any_phrase(text, group) is None
+
+
+@settings(max_examples=400, deadline=None)
+@given(group=st.sampled_from(_GROUPS), pieces=st.lists(_PIECES, max_size=12),
+       glue=st.sampled_from(["", " "]))
+def test_candidates_keep_every_phrase_the_word_tests_find(
+        group: tuple[str, ...], pieces: list[str], glue: str) -> None:
+    text = glue.join(pieces)
+    kept = candidates(text, group)
+    assert [p for p in group if contains(text, p)] == [p for p in kept if contains(text, p)]
+    assert has_phrase(text, group) == has_phrase(text, list(group))
+
+
+def test_candidates_are_in_group_order() -> None:
+    group = ("hot pan", "the kettle", "pan", "hot")
+    assert candidates("the hot pan", group) == ("hot pan", "the kettle", "pan", "hot")
+    assert candidates("a pan", group) == ("pan",)
 
 
 def test_a_phrase_is_found_through_possessives_hyphens_and_punctuation() -> None:
