@@ -114,11 +114,11 @@ class ObservabilityMiddleware:
         self.metrics.requests.labels(method, template, str(status)).inc()
         self.metrics.latency.labels(method, template).observe(elapsed)
         if _access_log.isEnabledFor(logging.INFO):
-            _access_log.info(json.dumps({
+            _access_log.info("http_request", extra={"fields": {
                 "event": "http_request", "request_id": request_id, "method": method,
                 "path": scope.get("path"), "route": template, "status": status,
                 "duration_ms": round(elapsed * 1000, 3),
-            }))
+            }})
 
 
 def install(app: FastAPI, metrics: Metrics, *, max_body_bytes: int) -> None:
@@ -131,7 +131,9 @@ def install(app: FastAPI, metrics: Metrics, *, max_body_bytes: int) -> None:
 
 
 class JsonLogFormatter(logging.Formatter):
-    """One JSON object a line: time, level, logger, and the message's own fields if it is JSON."""
+    """One JSON object a line: time, level, logger, and the record's own fields: those given as
+    `extra={"fields": {...}}` (the access log: no JSON text built only to be parsed again), or
+    the message's if it is a JSON object, else the message."""
 
     def format(self, record: logging.LogRecord) -> str:
         entry: dict[str, Any] = {
@@ -139,11 +141,14 @@ class JsonLogFormatter(logging.Formatter):
             "level": record.levelname.lower(),
             "logger": record.name,
         }
+        fields = record.__dict__.get("fields")
         message = record.getMessage()
-        try:
-            parsed = json.loads(message)
-        except ValueError:
-            parsed = None
+        parsed: object = fields
+        if not isinstance(fields, dict):
+            try:
+                parsed = json.loads(message)
+            except ValueError:
+                parsed = None
         if isinstance(parsed, dict):
             entry.update(parsed)
         else:

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import json
+import logging
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 from fastapi.testclient import TestClient
 
+from app.api.observability import JsonLogFormatter
 from app.config import Settings
 from app.main import create_app
 
@@ -49,3 +52,30 @@ class TestBodyLimit:
 
     def test_a_body_within_the_limit_is_decided(self, small_client: TestClient) -> None:
         assert small_client.post("/gate", json={"command": "wave hello"}).status_code == 200
+
+
+class TestAccessLog:
+    def test_each_request_is_one_json_line_with_its_id_route_and_status(
+            self, client: TestClient, caplog: pytest.LogCaptureFixture) -> None:
+        with caplog.at_level(logging.INFO, logger="safegate.access"):
+            client.post("/gate", json={"command": "wave hello"}, headers={"X-Request-ID": "r-7"})
+        records = [r for r in caplog.records if r.name == "safegate.access"]
+        assert len(records) == 1
+        line = JsonLogFormatter().format(records[0])
+        entry = json.loads(line)
+        assert "\n" not in line
+        assert entry["event"] == "http_request"
+        assert entry["request_id"] == "r-7"
+        assert (entry["method"], entry["route"], entry["status"]) == ("POST", "/gate", 200)
+        assert entry["duration_ms"] > 0
+        assert entry["level"] == "info" and entry["logger"] == "safegate.access"
+
+    def test_other_messages_keep_their_text_or_their_json_fields(self) -> None:
+        def formatted(message: str) -> dict[str, object]:
+            record = logging.LogRecord("uvicorn.error", logging.INFO, __file__, 1, message,
+                                       None, None)
+            parsed: dict[str, object] = json.loads(JsonLogFormatter().format(record))
+            return parsed
+
+        assert formatted("Started server process")["message"] == "Started server process"
+        assert formatted('{"event": "ready", "port": 8000}')["port"] == 8000
