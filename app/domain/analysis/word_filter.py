@@ -16,25 +16,33 @@ not start with a word character is never ruled out.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from functools import lru_cache
 
 _WORD_RUN = re.compile(r"\w+")
 _LEADING_RUN = re.compile(r"\w*")
 
 
+@dataclass(frozen=True, slots=True)
+class _GroupIndex:
+    by_word: dict[str, tuple[str, ...]]  # leading word run -> the phrases it opens
+    leading: frozenset[str]  # by_word's keys, for set operations with the text's words
+    unfiltered: tuple[str, ...]  # phrases with no leading word run: never ruled out
+
+
 def may_occur(text: str, phrases: tuple[str, ...]) -> bool:
     """Whether some phrase of the group could occur in `text` as whole words."""
-    leading = _leading_words(phrases)
-    return leading is None or not leading.isdisjoint(_word_runs(text))
+    index = _index(phrases)
+    return bool(index.unfiltered) or not index.leading.isdisjoint(_word_runs(text))
 
 
 def candidates(text: str, phrases: tuple[str, ...]) -> tuple[str, ...]:
     """The phrases of the group that could occur in `text` as whole words, in group order."""
-    by_word, unfiltered = _phrases_by_leading_word(phrases)
-    hits = _word_runs(text) & by_word.keys()
+    index = _index(phrases)
+    hits = index.leading & _word_runs(text)
     if not hits:
-        return unfiltered
-    found = {phrase for word in hits for phrase in by_word[word]}.union(unfiltered)
+        return index.unfiltered
+    found = {phrase for word in hits for phrase in index.by_word[word]}.union(index.unfiltered)
     return tuple(phrase for phrase in phrases if phrase in found)
 
 
@@ -43,21 +51,8 @@ def _word_runs(text: str) -> frozenset[str]:
     return frozenset(_WORD_RUN.findall(text))
 
 
-@lru_cache(maxsize=2048)
-def _leading_words(phrases: tuple[str, ...]) -> frozenset[str] | None:
-    leading = set()
-    for phrase in phrases:
-        found = _LEADING_RUN.match(phrase)
-        if found is None or not found.group(0):
-            return None
-        leading.add(found.group(0))
-    return frozenset(leading)
-
-
-@lru_cache(maxsize=2048)
-def _phrases_by_leading_word(phrases: tuple[str, ...]
-                             ) -> tuple[dict[str, tuple[str, ...]], tuple[str, ...]]:
-    """The group's phrases by leading word run, and those with none (never filtered out)."""
+@lru_cache(maxsize=4096)
+def _index(phrases: tuple[str, ...]) -> _GroupIndex:
     grouped: dict[str, list[str]] = {}
     unfiltered: list[str] = []
     for phrase in phrases:
@@ -67,4 +62,5 @@ def _phrases_by_leading_word(phrases: tuple[str, ...]
             grouped.setdefault(word, []).append(phrase)
         else:
             unfiltered.append(phrase)
-    return {w: tuple(ps) for w, ps in grouped.items()}, tuple(unfiltered)
+    return _GroupIndex({w: tuple(ps) for w, ps in grouped.items()}, frozenset(grouped),
+                       tuple(unfiltered))
