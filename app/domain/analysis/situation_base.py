@@ -21,7 +21,7 @@ from typing import Any
 from app.domain.analysis.context import Context
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
 from app.domain.analysis.scene_view import PersonView
-from app.domain.analysis.word_filter import candidates, may_occur
+from app.domain.analysis.word_filter import TEXT_MEMO_SIZE, candidates, may_occur
 
 _PRONOUNS = {"her": "female", "she": "female", "she's": "female", "herself": "female",
              "him": "male", "he": "male", "he's": "male", "his": "male", "himself": "male"}
@@ -57,7 +57,7 @@ def load_situations(directory: Path = KNOWLEDGE_DIR) -> Situations:
     return Situations(phrases=phrases, records=records)
 
 
-@lru_cache(maxsize=256)
+@lru_cache(maxsize=TEXT_MEMO_SIZE)
 def _tokens(text: str) -> tuple[str, frozenset[str]]:
     """The padded text and its words, each also without a possessive ending."""
     words = text.split()

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
-from app.domain.analysis.word_filter import candidates
+from app.domain.analysis.word_filter import TEXT_MEMO_SIZE, candidates
 
 _TOKEN = re.compile(r"[\w'-]+")
 
@@ -73,20 +73,25 @@ def has_phrase(text: str, phrases: Iterable[str]) -> str | None:
     Returns:
         The matching phrase, or None.
     """
-    padded = _padded(text)
+    padded = _padded_text(text)
     # The rule tables are tuples: only the phrases whose first word the text has are tried.
     possible = candidates(text, phrases) if isinstance(phrases, tuple) else phrases
     for phrase in possible:
-        if _padded(phrase) in padded:
+        if _padded_phrase(phrase) in padded:
             return phrase
     return None
 
 
-@lru_cache(maxsize=8192)
-def _padded(text: str) -> str:
-    # Token matching instead of one regex per phrase: Python's regex cache is small and the
-    # analyzer has thousands of phrases, so compiled patterns would be rebuilt every request.
+# Token matching instead of one regex per phrase: Python's regex cache is small and the
+# analyzer has thousands of phrases, so compiled patterns would be rebuilt every request.
+# A phrase table's paddings are kept for good; a text's only while one request reads it again
+# (TEXT_MEMO_SIZE), so no request is answered from work done for an earlier one.
+def _pad(text: str) -> str:
     return " " + " ".join(_TOKEN.findall(text)) + " "
+
+
+_padded_phrase = lru_cache(maxsize=8192)(_pad)
+_padded_text = lru_cache(maxsize=TEXT_MEMO_SIZE)(_pad)
 
 
 def _ranges(records: list[dict[str, Any]]) -> tuple[MassRange, ...]:

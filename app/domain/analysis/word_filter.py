@@ -19,6 +19,11 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
+# Memos keyed by a text (a command, a clause, an object's words) serve the many rules that
+# read the same text within one request; they are kept this small so that a later request with
+# the same command is analysed afresh, not answered from this one's work.
+TEXT_MEMO_SIZE = 64
+
 _WORD_RUN = re.compile(r"\w+")
 _LEADING_RUN = re.compile(r"\w*")
 
@@ -46,7 +51,7 @@ def candidates(text: str, phrases: tuple[str, ...]) -> tuple[str, ...]:
     return tuple(phrase for phrase in phrases if phrase in found)
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=TEXT_MEMO_SIZE)
 def _word_runs(text: str) -> frozenset[str]:
     return frozenset(_WORD_RUN.findall(text))
 
