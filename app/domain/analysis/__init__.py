@@ -158,16 +158,17 @@ def _ambiguous_ids(grounded: list[GroundedStep]) -> frozenset[str]:
     return frozenset(found)
 
 
-_SENTENCE_BREAK = re.compile(
-    r"(?<=[.!?;:])\s+|\s*[()\[\]{}<>\n]+\s*|\s+-{1,2}\s+|\s*\S+=\S*\s*"
-)
+_SENTENCE_BREAK = re.compile(r"(?<=[.!?;:])\s+|\s*[()\[\]{}<>\n]+\s*|\s+-{1,2}\s+")
+# With `key=value` tokens too; only a command holding an "=" needs its slower search.
+_SENTENCE_OR_SETTING_BREAK = re.compile(_SENTENCE_BREAK.pattern + r"|\s*\S+=\S*\s*")
 
 
 def sentences(command: str) -> list[str]:
     """The command's sentence-like parts: split at . ! ? ; : brackets, dashes, new lines and
     `key=value` tokens (machine-looking text is never part of an instruction)."""
     command = TITLE_DOT.sub(r"\1", command)
-    return [part.strip(" ,") for part in _SENTENCE_BREAK.split(command) if part.strip(" ,.")]
+    breaks = _SENTENCE_OR_SETTING_BREAK if "=" in command else _SENTENCE_BREAK
+    return [part.strip(" ,") for part in breaks.split(command) if part.strip(" ,.")]
 
 
 def analyze(request: GateRequest) -> HazardReport:

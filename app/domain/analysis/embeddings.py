@@ -81,7 +81,10 @@ class PhraseEncoder:
         ids = [i for word in text.split() for i in self._word_pieces(word)]
         if not ids:
             return np.zeros(self.dim, dtype=np.float32)
-        raw: Vectors = self._table[ids].mean(axis=0)
+        # np.mean's own steps without its Python wrapper: a float32 sum, divided by the count
+        # as an intp (so the very same float32 result, bit for bit).
+        raw: Vectors = np.add.reduce(self._table[ids], axis=0)
+        np.true_divide(raw, np.intp(len(ids)), out=raw, casting="unsafe")
         norm = np.sqrt(np.add.reduce(raw * raw))
         if not norm > 0:
             return np.zeros(self.dim, dtype=np.float32)

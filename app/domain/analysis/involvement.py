@@ -11,12 +11,14 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from itertools import pairwise
 
 from app.domain.analysis.context import Context
 from app.domain.analysis.grounding import GroundedStep, Referent
 from app.domain.analysis.knowledge_base import singular
 from app.domain.analysis.scene_view import ObjectView, PersonView, spaced_name
+from app.domain.analysis.word_filter import TEXT_MEMO_SIZE
 
 _TOKEN = re.compile(r"[\w'-]+")
 _WORD = re.compile(r"[a-z][a-z'-]+")
@@ -57,15 +59,16 @@ def _referents(grounded: GroundedStep) -> list[Referent]:
     return found
 
 
-def phrase_set(text: str) -> set[str]:
+@lru_cache(maxsize=TEXT_MEMO_SIZE)
+def phrase_set(text: str) -> frozenset[str]:
     """Words and word pairs of a text, each also in its singular (possessive 's dropped)."""
     # "grandma's" and "the boys'" both name the owner: drop the possessive either way.
     tokens = [t[:-2] if t.endswith("'s") else t.rstrip("'") for t in _TOKEN.findall(text)]
     pairs = [f"{a} {b}" for a, b in pairwise(tokens)]
-    return {*tokens, *pairs, *(singular(t) for t in (*tokens, *pairs))}
+    return frozenset((*tokens, *pairs, *(singular(t) for t in (*tokens, *pairs))))
 
 
-def _named_object(obj: ObjectView, words: set[str], concepts: set[str]) -> bool:
+def _named_object(obj: ObjectView, words: frozenset[str], concepts: set[str]) -> bool:
     # Medicines hide under many container names (pill pot, dosette, cup); naming any
     # medicine word involves every medication in the scene.
     if obj.has("medication") and "medication" in concepts:
@@ -78,7 +81,7 @@ def _named_object(obj: ObjectView, words: set[str], concepts: set[str]) -> bool:
     return any(c and c not in _GENERIC and len(c) >= 3 and c in words for c in candidates)
 
 
-def _named_person(ctx: Context, person: PersonView, words: set[str]) -> bool:
+def _named_person(ctx: Context, person: PersonView, words: frozenset[str]) -> bool:
     if person.name and (person.name.lower() in words or
                         person.name.lower().split()[-1] in words):
         return True

@@ -93,7 +93,7 @@ def _named_once(ctx: Context, text: str, concept: str) -> bool:
     return bool(hits) and all(singular(t) == t for t in hits)
 
 
-def told_apart(candidates: list[ObjectView], words: set[str]) -> bool:
+def told_apart(candidates: list[ObjectView], words: frozenset[str]) -> bool:
     """Whether the command's words name what exactly one candidate is, holds or whose it is.
 
     Args:

@@ -109,3 +109,13 @@ class TestSemanticMatcher:
         for family in raw["families"]:
             assert len(family["benign"]) >= 2, family["family"]
             assert f"`{family['hazard_class']}`" in readme, family["family"]
+
+
+@pytest.mark.parametrize("text", [
+    "put the knife in the drawer", "give grandma her pills , then run the bath", "",
+    "zzzqq", "the the the", "microwave the foil-wrapped leftovers for grandad's lunch"])
+def test_one_clause_embeds_exactly_as_a_batch_of_one(text: str) -> None:
+    encoder = load_encoder()
+    one = encoder.encode_one(text)
+    assert one.dtype == np.float32
+    assert np.array_equal(one, encoder.encode([text])[0])
