@@ -196,9 +196,27 @@ def _strip_manner(words: list[str], knowledge: Knowledge) -> list[str]:
 
     They are cues the rules read from the whole text; left in, they would be read as objects.
     """
-    phrases = {p for name in ("hurry", "max_speed", "careful") for p in knowledge.cues.get(
-        name, ()) if " " in p or p.endswith("ly")}
     text = f" {' '.join(words[1:])} "
-    for phrase in sorted(phrases, key=len, reverse=True):
+    for phrase in _manner_phrases(knowledge):
         text = text.replace(f" {phrase} ", " ")
     return [*words[:1], *text.split()]
+
+
+_MANNER_PHRASES: dict[int, tuple[dict[str, tuple[str, ...]], tuple[str, ...]]] = {}
+
+
+def _manner_phrases(knowledge: Knowledge) -> tuple[str, ...]:
+    """The manner cues, longest first, gathered once per cue table (held, so its id stays
+    its own while the entry lives) instead of on every clause."""
+    cues = knowledge.cues
+    held = _MANNER_PHRASES.get(id(cues))
+    if held is not None and held[0] is cues:
+        return held[1]
+    phrases = {p for name in ("hurry", "max_speed", "careful") for p in cues.get(name, ())
+               if " " in p or p.endswith("ly")}
+    # Longest first; equal lengths alphabetically, so the order never follows a set's.
+    ordered = tuple(sorted(phrases, key=lambda p: (-len(p), p)))
+    if len(_MANNER_PHRASES) >= 16:
+        _MANNER_PHRASES.clear()
+    _MANNER_PHRASES[id(cues)] = (cues, ordered)
+    return ordered

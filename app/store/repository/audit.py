@@ -26,6 +26,9 @@ EXTEND_LIBRARY = "extend_library"
 DEFER = "defer"
 _GATE_TABLE: Table = GateRecordRow.__table__  # type: ignore[assignment]
 _CONTRACT_TABLE: Table = ContractRow.__table__  # type: ignore[assignment]
+# Built once: a statement object memoises its compiled-cache key, a fresh one per call would not.
+_INSERT_GATE = insert(_GATE_TABLE)
+_INSERT_CONTRACT = insert(_CONTRACT_TABLE)
 
 
 def _to_record(row: GateRecordRow) -> GateRecord:
@@ -181,13 +184,13 @@ class AuditQueries(RepositoryBase):
             # The primary keys decide uniqueness: probing for the ids first would cost a query
             # per table on every decision for ids that are fresh uuid4s.
             try:
-                connection.execute(insert(_GATE_TABLE), [_gate_values(stored)])
+                connection.execute(_INSERT_GATE, [_gate_values(stored)])
             except IntegrityError as error:
                 raise Conflict(f"gate request {record_id!r} already exists") from error
             if stored_contract is not None:
                 try:
                     connection.execute(
-                        insert(_CONTRACT_TABLE), [_contract_values(stored_contract)])
+                        _INSERT_CONTRACT, [_contract_values(stored_contract)])
                 except IntegrityError as error:
                     raise Conflict(
                         f"contract {stored_contract.id!r} already exists") from error
