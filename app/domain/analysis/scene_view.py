@@ -19,10 +19,11 @@ from app.domain.models import GateRequest, Level, Person, SceneObject
 
 HEAVY_KG = 5.0
 _TRUE = (True, "true", "yes", 1)
-_PROPERTY_FLAGS = ("sharp", "fragile", "toxic", "flammable", "electrical", "medication",
-                   "allergen", "food", "small", "heavy", "metal", "walking_aid",
-                   "safety_barrier", "breakable", "corrosive", "camera", "personal",
-                   "sentimental", "dangerous_in_use")
+_MATERIAL_WORDS = re.compile(r"[\W_]+")
+_PROPERTY_FLAGS = frozenset({
+    "sharp", "fragile", "toxic", "flammable", "electrical", "medication", "allergen", "food",
+    "small", "heavy", "metal", "walking_aid", "safety_barrier", "breakable", "corrosive",
+    "camera", "personal", "sentimental", "dangerous_in_use"})
 _METALS = frozenset({"metal", "metallic", "steel", "iron", "tin", "foil", "copper", "brass",
                      "chrome", "stainless"})
 _MELTS = frozenset({"plastic", "melamine", "polystyrene", "styrofoam", "nylon", "acrylic"})
@@ -181,18 +182,18 @@ def object_view(obj: SceneObject, knowledge: Knowledge) -> ObjectView:
         flags.add("fragile")
     if record.get("isHeatSource") or record.get("heat_source"):
         flags.add("heat_source")
-    if "Metal" in record.get("materials", []) and len(record.get("materials", [])) == 1:
+    if record.get("materials") == ["Metal"]:
         flags.add("metal")
-    material = set(re.split(r"[\W_]+", str(props.get("material", "")).lower())) - {""}
-    if material & _METALS or any(w.startswith("alumin") for w in material):
-        flags.add("metal")
-    elif material:
-        flags.discard("metal")  # a glass or ceramic pan is not metal whatever its kind
-    if material & _MELTS:
-        flags.add("meltable")
-    for flag in _PROPERTY_FLAGS:
-        if flag in props:
-            (flags.add if props[flag] in _TRUE else flags.discard)(flag)
+    if "material" in props:
+        material = set(_MATERIAL_WORDS.split(str(props["material"]).lower())) - {""}
+        if material & _METALS or any(w.startswith("alumin") for w in material):
+            flags.add("metal")
+        elif material:
+            flags.discard("metal")  # a glass or ceramic pan is not metal whatever its kind
+        if material & _MELTS:
+            flags.add("meltable")
+    for flag in _PROPERTY_FLAGS.intersection(props):
+        (flags.add if props[flag] in _TRUE else flags.discard)(flag)
     contents_text = str(props["contents"]).lower() if props.get("contents") else None
     substance = knowledge.substance_of(contents_text) if contents_text else None
     if substance:
@@ -289,8 +290,9 @@ def build_scene_view(request: GateRequest, knowledge: Knowledge) -> SceneView:
             if relation.relation in ("in", "inside", "on") and relation.object in objects:
                 other = objects[relation.object]
                 view.place_words = view.place_words | set(_spaced(other.type).split())
+    holders = _holders_by_id(scene)
     for view in objects.values():
-        view.holders = tuple(_holders(view, scene))
+        view.holders = tuple(holders.get(view.id, ()))
         for holder_id in view.holders:
             holder = objects.get(holder_id) if holder_id else None
             if holder is not None:
@@ -310,15 +312,15 @@ def build_scene_view(request: GateRequest, knowledge: Knowledge) -> SceneView:
         user=user, robot_room=request.robot.room if request.robot else None)
 
 
-def _holders(view: ObjectView, scene: Any) -> list[str]:
-    """Ids of what the object rests on or in, from its fields and the relations."""
-    found: list[str] = []
+def _holders_by_id(scene: Any) -> dict[str, list[str]]:
+    """Object id -> ids of what it rests on or in: its own fields first, then the relations."""
+    found: dict[str, list[str]] = {}
     if scene is not None:
         for obj in scene.objects:
-            if obj.id == view.id:
-                found += [i for i in (obj.on, obj.inside) if i]
-        found += [r.object for r in scene.relations
-                  if r.subject == view.id and r.relation in ("in", "inside", "on", "under")]
+            found.setdefault(obj.id, []).extend(i for i in (obj.on, obj.inside) if i)
+        for relation in scene.relations:
+            if relation.relation in ("in", "inside", "on", "under"):
+                found.setdefault(relation.subject, []).append(relation.object)
     return found
 
 
