@@ -56,6 +56,9 @@ class Context:
     # The reader's whole result: temporal facts (`parsed.facts`), comprehension gaps
     # (`parsed.not_understood`) and implied devices (`parsed.devices`); None when built by hand.
     parsed: ParsedCommand | None = None
+    # Which people a text names, asked by many rules of one pass (the people are settled
+    # before the rules run; see `situation_base.named_people`).
+    named_in: dict[str, list[PersonView]] = field(default_factory=dict)
 
     def add(self, level: Level, category: Category, hazard_class: str, mechanism: str,
             entities: Mapping[str, str | None], severity: Severity,

@@ -132,6 +132,13 @@ def named_people(ctx: Context, text: str | None = None) -> list[PersonView]:
         The people, in scene order, without the user unless named as "me".
     """
     text = ctx.text if text is None else text
+    known = ctx.named_in.get(text)
+    if known is None:
+        known = ctx.named_in[text] = _named_people(ctx, text)
+    return list(known)
+
+
+def _named_people(ctx: Context, text: str) -> list[PersonView]:
     people = [p for p in ctx.view.real_people() if not p.is_user]
     if contained(text, _GROUP_WORDS):
         return people
