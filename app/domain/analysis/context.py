@@ -18,6 +18,7 @@ from app.domain.analysis.grounding import GroundedStep, Referent
 from app.domain.analysis.knowledge_base import Knowledge
 from app.domain.analysis.mentions import Mention
 from app.domain.analysis.scene_view import ObjectView, PersonView, SceneView
+from app.domain.analysis.word_filter import candidates
 from app.domain.models import (
     Category,
     Confidence,
@@ -87,7 +88,8 @@ class Context:
 
     def cue(self, name: str) -> bool:
         """Whether the command contains any phrase of a cue group (whole words)."""
-        return any(_contains(self.text, phrase) for phrase in self.knowledge.cues.get(name, ()))
+        phrases = candidates(self.text, self.knowledge.cues.get(name, ()))
+        return any(_contains(self.text, phrase) for phrase in phrases)
 
     def place_in(self, mention: Mention | None, group: str) -> bool:
         """Whether a place phrase (with its own location) names a place of a group."""
@@ -96,7 +98,8 @@ class Context:
         words = mention.text
         if mention.location:
             words += " " + mention.location[1].text
-        return any(_contains(words, phrase) for phrase in self.knowledge.places[group])
+        return any(_contains(words, phrase)
+                   for phrase in candidates(words, self.knowledge.places[group]))
 
     def objects(self, referent: Referent | None) -> list[ObjectView]:
         if referent is None or referent.kind != "object":
