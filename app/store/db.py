@@ -64,8 +64,9 @@ def create_engine_for(url: str, **engine_options: Any) -> Engine:
 
 def _json_text(value: Any) -> str:
     """JSON columns' encoder: pydantic-core's (compiled), several times the standard library's
-    speed on the audit trail's large documents."""
-    return to_json(value).decode()
+    speed on the audit trail's large documents. A pydantic model may be stored as it is: it is
+    written as `model_dump(mode="json", by_alias=True)` would give it, in one pass."""
+    return to_json(value, by_alias=True).decode()
 
 
 def _create_sqlite_engine(url: URL, engine_options: dict[str, Any]) -> Engine:

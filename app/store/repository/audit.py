@@ -61,12 +61,9 @@ def _gate_values(record: GateRecord) -> dict[str, Any]:
     return {
         "id": record.id,
         "created_at": record.created_at,
-        "request": record.request.model_dump(mode="json", by_alias=True),
-        "hazard_report": (
-            record.hazard_report.model_dump(mode="json")
-            if record.hazard_report is not None
-            else None
-        ),
+        # Models go to the JSON encoder as they are (see `db._json_text`): no dict in between.
+        "request": record.request,
+        "hazard_report": record.hazard_report,
         "decision": record.decision,
         "rule": record.rule,
         "defer_kind": record.defer_kind,
