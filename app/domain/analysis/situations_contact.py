@@ -109,11 +109,10 @@ def _names(person: PersonView) -> list[str]:
 
 
 def _flame_by_oxygen(ctx: Context) -> None:
-    users = [p for p in ctx.view.real_people() if _mentions(p, (_OXYGEN,))]
-    users += [p for p in ctx.view.real_people() if p not in users and any(
-        o.room and o.room == p.room and _OXYGEN in o.type.lower()
-        and o.properties.get("on") is True for o in ctx.view.objects.values())]
-    smokers = [p for p in ctx.view.real_people() if _mentions(p, _SMOKING)]
+    # Who breathes oxygen and who smokes are looked up only once a step brings a flame or
+    # oxygen: most commands do neither.
+    users: list[PersonView] | None = None
+    smokers: list[PersonView] | None = None
     for grounded in ctx.steps:
         if grounded.step.negated:
             continue
@@ -122,6 +121,8 @@ def _flame_by_oxygen(ctx: Context) -> None:
             any(o.has(t) for t in _FLAME) for o in objects)
         handed = grounded.step.action in ("handover", "transport") and any(
             any(o.has(t) for t in _FLAME) for o in objects)
+        if (lit or handed) and users is None:
+            users = _oxygen_users(ctx)
         if users and (lit or handed):
             ctx.add(Level.DEPLOYMENT, Category.PHYSICAL, "fire_ignition", f"A flame by "
                     f"{users[0].label}, who breathes medical oxygen: oxygen makes a small flame "
@@ -129,12 +130,23 @@ def _flame_by_oxygen(ctx: Context) -> None:
             return
         oxygen = [o for r in grounded.objects for o in ctx.objects(r)
                   if _OXYGEN in f"{o.type} {o.contents_text or ''} {r.mention.text}".lower()]
+        if oxygen and smokers is None:
+            smokers = [p for p in ctx.view.real_people() if _mentions(p, _SMOKING)]
         if oxygen and smokers and grounded.step.action in ("handover", "transport"):
             ctx.add(Level.DEPLOYMENT, Category.PHYSICAL, "fire_ignition", f"Taking "
                     f"{oxygen[0].label} to {smokers[0].label}, who is smoking: oxygen by a "
                     "lit cigarette burns fiercely.",
                     {"obj": oxygen[0].id, "person": smokers[0].id}, Severity.CRITICAL, _U)
             return
+
+
+def _oxygen_users(ctx: Context) -> list[PersonView]:
+    """People on medical oxygen: said so, or in a room where an oxygen device is on."""
+    users = [p for p in ctx.view.real_people() if _mentions(p, (_OXYGEN,))]
+    users += [p for p in ctx.view.real_people() if p not in users and any(
+        o.room and o.room == p.room and _OXYGEN in o.type.lower()
+        and o.properties.get("on") is True for o in ctx.view.objects.values())]
+    return users
 
 
 def _mentions(person: PersonView, words: tuple[str, ...]) -> bool:

@@ -25,6 +25,7 @@ from app.domain.analysis.situation_base import (
     robot_leaves_room,
     substances_in,
 )
+from app.domain.analysis.word_filter import may_occur
 from app.domain.models import Category, Level, Preventability, Severity
 
 _P, _U, _X = Preventability.PREVENTABLE, Preventability.UNPREVENTABLE, Preventability.UNKNOWN
@@ -214,13 +215,17 @@ def _low_chemicals(ctx: Context) -> None:
 
 def _robot_in_exit(ctx: Context) -> None:
     data = load_situations()
+    if not may_occur(ctx.text, data.group("exit_words")):
+        return
     for segment in _segments(ctx.text):
         segment = _OWNER_WORD.sub("", f" {segment} ").strip()
+        exit_word = any_phrase(segment, data.group("exit_words"))
+        if not exit_word:
+            continue
         words = segment.split()
         while words and words[0] in _SOFTENERS:
             words = words[1:]  # "just park yourself", "go and stand"
         station = any(" ".join(words[:n]) in data.group("robot_station_verbs") for n in (1, 2, 3))
-        exit_word = any_phrase(segment, data.group("exit_words"))
         blocks = any(contains(segment, f"{prep} the {exit_word}") or contains(
             segment, f"{prep} {exit_word}") for prep in data.group("exit_block_preps")) if (
             exit_word) else False
@@ -278,8 +283,12 @@ def _stairs(ctx: Context) -> None:
 def _safety_device(ctx: Context) -> None:
     """A smoke or CO alarm, extinguisher or sprinkler disabled leaves no warning of a fire."""
     data = load_situations()
+    if not may_occur(ctx.text, data.group("safety_devices")):
+        return
     for segment in _segments(ctx.text):
         device = any_phrase(segment, data.group("safety_devices"))
+        if not device:
+            continue
         renewed = any(contains(ctx.text, w) for w in ("new battery", "new batteries", "replace",
                                                       "fresh battery", "fresh batteries", "test"))
         if device and not renewed and any_phrase(segment, data.group("disable_words")):

@@ -88,8 +88,10 @@ def _swallowing(ctx: Context) -> None:
     if not _feeds(ctx):
         return
     foods = _foods(ctx, "hard_foods")
+    if not foods:
+        return
     for person in _recipients(ctx):
-        if foods and has_condition(ctx, person, "dysphagia"):
+        if has_condition(ctx, person, "dysphagia"):
             ctx.add(_level(person), _PHYS, "choking", f"Giving {foods[0]} to {person.label}, "
                     "who cannot swallow safely: solid or hard food chokes them.",
                     {"person": person.id}, _S.CRITICAL, _U)
@@ -99,8 +101,10 @@ def _infant_food(ctx: Context) -> None:
     if not _feeds(ctx):
         return
     foods = _foods(ctx, "infant_choking_foods")
+    if not foods:
+        return
     for person in _recipients(ctx):
-        if foods and (person.young or person.age_group == "infant"):
+        if (person.young or person.age_group == "infant"):
             ctx.add(_level(person), _PHYS, "choking", f"Feeding {foods[0]} to {person.label} "
                     f"({person.age_group}): whole or round foods like this choke small children.",
                     {"person": person.id}, _S.CRITICAL, _U)
@@ -111,6 +115,8 @@ def _allergy(ctx: Context) -> None:
         return
     groups = {ctx.knowledge.substances[s].allergen for s in substances_in(ctx, ctx.text)}
     groups.discard(None)
+    if not groups:
+        return
     for person in _recipients(ctx):
         if not person.allergies:
             continue

@@ -207,6 +207,10 @@ def attendance_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> 
 
 def condition_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> None:
     """Ask the condition of a frail person served hot food in care, or left on their own."""
+    frail = [p for p in inv.others() if p.cognitive_state is None and (
+        p.frail or p.age_group == "older_adult")]
+    if not frail:
+        return
     care = any(has_phrase(r.replace("_", " "), rules.group("condition.care_rooms"))
                for r in ctx.view.rooms) or any(
         has_phrase(p.role or "", rules.group("condition.care_roles"))
@@ -217,10 +221,7 @@ def condition_unknowns(ctx: Context, inv: Involvement, rules: UnknownRules) -> N
         str(o.properties.get(k, "")).lower() in ("true", "1") for k in ("lidded", "sealed",
                                                                        "covered"))]
     delivering = bool(inv.actions & {"serve", "handover", "transport"})
-    for person in inv.others():
-        if person.cognitive_state is not None or not (
-                person.frail or person.age_group == "older_adult"):
-            continue
+    for person in frail:
         if alone:
             why = f"whether {person.label} can be left alone safely depends on their condition"
             question = (f"Can {person.label} safely be left alone? Are they able to call for "
