@@ -172,45 +172,48 @@ def _placement(ctx: Context, grounded: GroundedStep,
                switched: dict[str, tuple[bool, GroundedStep]]) -> None:
     destination = grounded.destination
     mention = destination.mention if destination else None
+    placed = [(ref, obj) for ref in grounded.objects for obj in ctx.objects(ref)]
+    if not placed:
+        return
     heat = [o for o in ctx.objects(destination) if o.has("heat_source")]
     children = ctx.view.children()
-    for ref in grounded.objects:
-        for obj in ctx.objects(ref):
-            traits = traits_of(ctx, obj, ref.mention)
-            entities = {"obj": obj.id}
-            # Hung on a hook, nail or peg, it is off the floor and out of the way.
-            aside = (mention is not None and mention.head in ("wall", "corner", "side")) or any(
-                contains(ctx.text, w) for w in ("out of the way", "to one side",
-                                                 "against the wall")) or (
-                grounded.step.verb or "").startswith("hang")
-            if ctx.place_in(mention, "stairs") and not aside:
-                ctx.add(Level.TASK, _CON, "trip_hazard", f"{obj.label} left on the stairs "
-                        "is a fall hazard.", entities, _S.HIGH, _U)
-            elif ctx.place_in(mention, "exit") and not aside and grounded.step.destination_prep in (
-                    "in front of", "against", "by", "at", "next to", "near", "in"):
-                ctx.add(Level.TASK, _CON, "blocked_exit", f"{obj.label} placed at "
-                        f"{mention.text if mention else 'the door'} blocks the way out.",
-                        entities, _S.HIGH, _U)
-            elif ctx.place_in(mention, "walkway") and not aside and (obj.has("heavy") or obj.has(
-                    "furniture") or obj.has("container") or obj.has("cord") or not obj.has(
-                    "food")) and grounded.step.action != "pour":
-                frail = any(p.frail for p in ctx.view.people.values())
-                ctx.add(Level.TASK, _CON, "trip_hazard", f"{obj.label} left on a walkway can "
-                        "trip someone.", entities, _S.HIGH if frail else _S.MODERATE,
-                        _U if frail else _P)
-            if grounded.step.action == "pour" and ctx.place_in(mention, "walkway"):
-                ctx.add(Level.TASK, _CON, "spill_slip", "Liquid poured on the floor is a "
-                        "slip hazard.", entities, _S.MODERATE, _U)
-            for source in heat:
-                lit = switched.get(source.id, (bool(source.switched_on), grounded))[0]
-                if traits.has("flammable") and not traits.has("food"):
-                    ctx.add(Level.DEPLOYMENT if not source.virtual else Level.TASK, _CON,
-                            "fire_risk_left" if not lit else "fire_ignition", f"{obj.label}, "
-                            f"which burns, put on {source.label}.", {"obj": obj.id,
-                            "other": source.id}, _S.CRITICAL if lit else _S.MODERATE,
-                            _U if lit else _P)
-            _reach(ctx, grounded, obj, traits.has("medication"), any(traits.has(t) for t in (
-                "toxic", "sharp", "hot", "small")), children)
+    # Hung on a hook, nail or peg, it is off the floor and out of the way.
+    aside = (mention is not None and mention.head in ("wall", "corner", "side")) or any(
+        contains(ctx.text, w) for w in ("out of the way", "to one side", "against the wall")
+    ) or (grounded.step.verb or "").startswith("hang")
+    on_stairs, at_exit, on_walkway = (ctx.place_in(mention, group)
+                                      for group in ("stairs", "exit", "walkway"))
+    for ref, obj in placed:
+        traits = traits_of(ctx, obj, ref.mention)
+        entities = {"obj": obj.id}
+        if on_stairs and not aside:
+            ctx.add(Level.TASK, _CON, "trip_hazard", f"{obj.label} left on the stairs "
+                    "is a fall hazard.", entities, _S.HIGH, _U)
+        elif at_exit and not aside and grounded.step.destination_prep in (
+                "in front of", "against", "by", "at", "next to", "near", "in"):
+            ctx.add(Level.TASK, _CON, "blocked_exit", f"{obj.label} placed at "
+                    f"{mention.text if mention else 'the door'} blocks the way out.",
+                    entities, _S.HIGH, _U)
+        elif on_walkway and not aside and (obj.has("heavy") or obj.has(
+                "furniture") or obj.has("container") or obj.has("cord") or not obj.has(
+                "food")) and grounded.step.action != "pour":
+            frail = any(p.frail for p in ctx.view.people.values())
+            ctx.add(Level.TASK, _CON, "trip_hazard", f"{obj.label} left on a walkway can "
+                    "trip someone.", entities, _S.HIGH if frail else _S.MODERATE,
+                    _U if frail else _P)
+        if grounded.step.action == "pour" and on_walkway:
+            ctx.add(Level.TASK, _CON, "spill_slip", "Liquid poured on the floor is a "
+                    "slip hazard.", entities, _S.MODERATE, _U)
+        for source in heat:
+            lit = switched.get(source.id, (bool(source.switched_on), grounded))[0]
+            if traits.has("flammable") and not traits.has("food"):
+                ctx.add(Level.DEPLOYMENT if not source.virtual else Level.TASK, _CON,
+                        "fire_risk_left" if not lit else "fire_ignition", f"{obj.label}, "
+                        f"which burns, put on {source.label}.", {"obj": obj.id,
+                        "other": source.id}, _S.CRITICAL if lit else _S.MODERATE,
+                        _U if lit else _P)
+        _reach(ctx, grounded, obj, traits.has("medication"), any(traits.has(t) for t in (
+            "toxic", "sharp", "hot", "small")), children)
 
 
 def _reach(ctx: Context, grounded: GroundedStep, obj: ObjectView, medication: bool,

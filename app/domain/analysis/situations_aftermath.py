@@ -101,16 +101,18 @@ def _noise_where_asleep(ctx: Context) -> None:
 def _food_left_out(ctx: Context) -> None:
     """Raw meat, fish, dairy or cooked food left out for hours grows bacteria that sicken."""
     data = load_situations()
+    food = any_phrase(ctx.text, data.group("perishable_foods"))
+    if not food:
+        return
     for segment in _segments(ctx.text):
         left = any_phrase(segment, data.group("left_out_words")) or (
             "out" in segment.split() and any(w in segment.split() for w in ("leave", "left")))
         cold = any_phrase(segment, data.group("cold_storage_places"))
         if not left or cold:
             continue
-        food = any_phrase(ctx.text, data.group("perishable_foods"))
         long = any_phrase(segment, data.group("long_durations")) or any_phrase(
             segment, data.group("thaw_words"))
-        if food and long:
+        if long:
             ctx.add(Level.TASK, Category.CONSEQUENTIAL, "food_safety", f"The {food} is left "
                     f"at room temperature ({long}): bacteria multiply and it can cause food "
                     "poisoning.", {}, _S.HIGH, _U)
@@ -235,6 +237,8 @@ def _cord_across_the_way(ctx: Context) -> None:
         if grounded.step.negated:
             continue
         cords = [o for r in grounded.objects for o in ctx.objects(r) if o.has("cord")]
+        if not cords:
+            continue
         routes = {m.group(1) for m in _CORD_ROUTE.finditer(grounded.step.text)}
         crosses = any(contains(" ".join(routes), w) for w in walkways) or "door" in routes
         if cords and crosses:

@@ -151,6 +151,8 @@ def _placements(ctx: Context) -> None:
 def _blades_in_water(ctx: Context) -> None:
     """Blades left under opaque water (a washing-up bowl, soapy sink) cut the next hand in."""
     murky_words = load_situations().group("murky_water_words")
+    if not may_occur(ctx.text, murky_words):
+        return
     for segment in _segments(ctx.text):
         murky = any_phrase(segment, murky_words)
         if not murky or not contains(segment, "leave"):
@@ -270,10 +272,12 @@ def _stairs(ctx: Context) -> None:
         return
     for grounded in ctx.steps:
         step = grounded.step
+        if step.negated or step.action not in _MOVING:
+            continue
         rooms = [i for r in (grounded.destination, *grounded.objects) if r and r.kind == "room"
                  for i in r.ids]
         upstairs = any(any(w in room for w in data.group("stairs_room_words")) for room in rooms)
-        if not step.negated and step.action in _MOVING and (
+        if (
                 any_phrase(step.text, data.group("stairs_words")) or upstairs):
             ctx.add(Level.USER, _OPS, "missing_skill", f"'{step.text}' means going up or down "
                     "stairs, and the robot lists no stair-climbing skill.", {}, _S.HIGH, _U)

@@ -262,16 +262,16 @@ def _care_skills(ctx: Context) -> None:
     if robot is None or robot.skills is None:
         return
     have = {s.lower().replace("-", "_").replace(" ", "_") for s in robot.skills}
-    someone = bool(named_people(ctx)) or any(contains(ctx.text, w) for w in (
-        "her", "him", "them", "his"))
-    if not someone:
-        return
-    for name, task in load_situations().records["care_tasks"].items():
-        word = any_phrase(ctx.text, task["words"])
-        if word and have.isdisjoint(task["skills"]):
-            ctx.add(Level.USER, _OPS, "missing_skill", f"{task['what'].capitalize()} "
-                    f"('{word}') needs a care skill ({name.replace('_', ' ')}) the robot does "
-                    "not list.", {}, _S.HIGH, _U)
+    tasks = load_situations().records["care_tasks"].items()
+    missing = [(name, task, word) for name, task in tasks
+               if (word := any_phrase(ctx.text, task["words"])) and have.isdisjoint(task["skills"])]
+    if not missing or not (named_people(ctx) or any(
+            contains(ctx.text, w) for w in ("her", "him", "them", "his"))):
+        return  # a care task the robot cannot do, done for someone
+    for name, task, word in missing:
+        ctx.add(Level.USER, _OPS, "missing_skill", f"{task['what'].capitalize()} ('{word}') "
+                f"needs a care skill ({name.replace('_', ' ')}) the robot does not list.", {},
+                _S.HIGH, _U)
 
 
 def _overdose(ctx: Context) -> None:
