@@ -71,6 +71,8 @@ class Grounder:
         self._using = False
         self._discarded: set[str] = set()
         self._last_person: dict[str | None, Referent] = {}
+        # An object's id, name and type words, asked about for every phrase of the command.
+        self._name_words: dict[str, tuple[frozenset[str], str]] = {}
 
     def ground(self, step: Step) -> GroundedStep:
         """Resolve every phrase of a step (objects first, so "it" can point back)."""
@@ -260,8 +262,12 @@ class Grounder:
 
     def _names(self, obj: ObjectView, mention: Mention) -> bool:
         head = mention.head
-        words = f"{obj.id} {obj.name or ''} {obj.type}".lower().replace("_", " ")
-        if head in words.split() or singular(head) in words.split() or head == words.strip():
+        named = self._name_words.get(obj.id)
+        if named is None:
+            text = f"{obj.id} {obj.name or ''} {obj.type}".lower().replace("_", " ")
+            named = self._name_words[obj.id] = (frozenset(text.split()), text.strip())
+        words, whole = named
+        if head in words or singular(head) in words or head == whole:
             return True
         if mention.substance and obj.contents == mention.substance:
             return True

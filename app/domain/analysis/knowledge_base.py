@@ -60,9 +60,13 @@ class Role:
     gender: str | None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Knowledge:
-    """Every lookup table the symbolic analyzer reads. Phrases are lower case."""
+    """Every lookup table the symbolic analyzer reads. Phrases are lower case.
+
+    Compared and hashed by identity (the tables are loaded once per process), so derived
+    tables can be memoised per `Knowledge`.
+    """
 
     concepts: dict[str, Concept]
     concept_words: dict[str, str]

@@ -174,16 +174,9 @@ class SceneView:
 def object_view(obj: SceneObject, knowledge: Knowledge) -> ObjectView:
     """Derive one object's hazard properties from its type, concept, contents and properties."""
     props = obj.properties
-    concept = knowledge.concept_of_type(obj.type) or (
-        knowledge.noun_concept(obj.name) if obj.name else None)
-    flags: set[str] = set(knowledge.concepts[concept].props) if concept else set()
-    record = knowledge.ai2thor_types.get(obj.type, {})
-    if record.get("breakable") is True:
-        flags.add("fragile")
-    if record.get("isHeatSource") or record.get("heat_source"):
-        flags.add("heat_source")
-    if record.get("materials") == ["Metal"]:
-        flags.add("metal")
+    kind = _kind_facts(knowledge, obj.type, obj.name)
+    concept = kind.concept
+    flags = set(kind.flags)
     if "material" in props:
         material = set(_MATERIAL_WORDS.split(str(props["material"]).lower())) - {""}
         if material & _METALS or any(w.startswith("alumin") for w in material):
@@ -209,10 +202,8 @@ def object_view(obj: SceneObject, knowledge: Knowledge) -> ObjectView:
     if str(props.get("temperature", "")).lower() == "hot":
         flags.add("hot")
     mass = props.get("mass_kg")
-    mass_kg = float(mass) if isinstance(mass, int | float) else knowledge.type_mass(obj.type)
-    if mass_kg is None and concept:
-        mass_kg = knowledge.concepts[concept].mass_kg
-    if mass_kg is not None and mass_kg >= HEAVY_KG and record.get("pickupable"):
+    mass_kg = float(mass) if isinstance(mass, int | float) else kind.typical_mass_kg
+    if mass_kg is not None and mass_kg >= HEAVY_KG and kind.pickupable:
         flags.add("heavy")
     owner = next((str(props[k]).lower() for k in _OWNER_KEYS if props.get(k)), None)
     place = {w for value in (obj.on, obj.inside, props.get("location"), obj.room)
@@ -224,6 +215,35 @@ def object_view(obj: SceneObject, knowledge: Knowledge) -> ObjectView:
         switched_on=_flag(props.get("on")), is_open=_flag(props.get("open")), owner=owner,
         place_words=frozenset(place), properties=dict(props),
         mass_given=isinstance(mass, int | float))
+
+
+@dataclass(frozen=True, slots=True)
+class _KindFacts:
+    """What an object's type (and name) alone say about it."""
+
+    concept: str | None
+    flags: frozenset[str]
+    typical_mass_kg: float | None
+    pickupable: bool
+
+
+@lru_cache(maxsize=4096)
+def _kind_facts(knowledge: Knowledge, type_name: str, name: str | None) -> _KindFacts:
+    # Types and names are vocabulary ("Mug", "grandma's mug"): worked out once, not per object.
+    concept = knowledge.concept_of_type(type_name) or (
+        knowledge.noun_concept(name) if name else None)
+    flags: set[str] = set(knowledge.concepts[concept].props) if concept else set()
+    record = knowledge.ai2thor_types.get(type_name, {})
+    if record.get("breakable") is True:
+        flags.add("fragile")
+    if record.get("isHeatSource") or record.get("heat_source"):
+        flags.add("heat_source")
+    if record.get("materials") == ["Metal"]:
+        flags.add("metal")
+    mass_kg = knowledge.type_mass(type_name)
+    if mass_kg is None and concept:
+        mass_kg = knowledge.concepts[concept].mass_kg
+    return _KindFacts(concept, frozenset(flags), mass_kg, bool(record.get("pickupable")))
 
 
 def _flag(value: Any) -> bool | None:
