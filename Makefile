@@ -48,9 +48,11 @@ bench: $(STAMP)
 	$(BIN)/safegate bench run bench/cases/third/third.jsonl --name third
 	$(BIN)/safegate bench run bench/cases/fourth/fourth.jsonl --name fourth
 
-## Performance benchmarks: each prints a table.
+## Performance benchmarks: each prints a table. (`_*.py` are their helpers;
+## analysis_stability.py is a record/check tool for speed work, run by hand.)
+PERF_BENCHMARKS := $(filter-out bench/perf/analysis_stability.py,$(wildcard bench/perf/[!_]*.py))
 perf: $(STAMP)
-	@for f in bench/perf/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
+	@for f in $(PERF_BENCHMARKS); do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 
 ## Fuzzing: schemathesis on every operation of a live server's OpenAPI spec (derandomized;
 ## SAFEGATE_FUZZ_EXAMPLES requests per operation and mode, 100 here, 15 in `make test`), plan and
