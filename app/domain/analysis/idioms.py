@@ -77,6 +77,8 @@ def rewrite(words: list[str], language: Language, knowledge: Knowledge) -> Rewri
 def _aspect(words: list[str], language: Language, knowledge: Knowledge
             ) -> tuple[list[str], bool]:
     """"keep telling mum off" -> "tell mum off", repeated."""
+    if not any(word.endswith("ing") for word in words[1:]):
+        return words, False  # no "-ing" form after the first word: no aspect verb here
     heads: list[str] = []  # the opening words' lemmas, computed once for every phrase
     for phrase in language.aspect_verbs:
         parts = phrase.split()
