@@ -13,7 +13,6 @@ grandpa"), and verbless notes ("oven on at 200" -> "turn oven on at 200", "table
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 from app.domain.analysis.clauses import lemma, verb_at
 from app.domain.analysis.knowledge_base import Knowledge
@@ -164,29 +163,18 @@ def _match(pattern: tuple[str, ...], p_index: int, words: list[str], w_index: in
 def _word_fits(token: str, word: str, language: Language) -> bool:
     if token == "#":
         return any(ch.isdigit() for ch in word)
-    allowed = _accepted(token, language)
+    allowed = language.token_sets[token]
     return word in allowed or not allowed.isdisjoint(_forms(word, language))
 
 
-def _accepted(token: str, language: Language) -> frozenset[str]:
-    if token.startswith("@"):
-        return language.word_sets.get(token[1:], frozenset())
-    return _alternatives(token)
-
-
 def _forms(word: str, language: Language) -> tuple[str, ...]:
-    """The word and its base forms (memoised: pure, bounded by the words seen)."""
+    """The word and its base forms (memoised in `_FORMS`)."""
     forms = _FORMS.get(word)
     if forms is None:
         if len(_FORMS) >= _FORMS_LIMIT:
             _FORMS.clear()
         forms = _FORMS[word] = tuple(language.base_forms(word))
     return forms
-
-
-@lru_cache(maxsize=1024)
-def _alternatives(token: str) -> frozenset[str]:
-    return frozenset(token.split("|"))
 
 
 def _action_noun(words: list[str], language: Language, knowledge: Knowledge) -> list[str]:

@@ -44,6 +44,9 @@ class Language:
 
     word_sets: dict[str, frozenset[str]]
     rewrites: tuple[tuple[tuple[str, ...], tuple[str, ...]], ...]
+    # Every word-list token of the rewrites ("@name", "a|b"; "?" dropped) -> the words it
+    # accepts, read once at load.
+    token_sets: dict[str, frozenset[str]]
     # Per rewrite, the words its first token accepts (None: a slot, a number or optional), so
     # a clause skips the rules that cannot open it without trying them.
     rewrite_openers: tuple[frozenset[str] | None, ...]
@@ -123,11 +126,15 @@ def load_language(directory: Path = KNOWLEDGE_DIR) -> Language:
     word_sets = {name: frozenset(words) for name, words in raw["word_sets"].items()}
     rewrites = tuple((tuple(pattern.split()), tuple(replacement.split()))
                      for pattern, replacement in raw["rewrites"])
+    token_sets = {token: words for pattern, _ in rewrites for token in
+                  (t.rstrip("?") if t.endswith("?") and len(t) > 1 else t for t in pattern)
+                  if (words := token_words(token, word_sets)) is not None}
     return Language(
         word_sets=word_sets,
         rewrites=rewrites,
+        token_sets=token_sets,
         rewrite_openers=tuple(
-            None if pattern[0].endswith("?") else token_words(pattern[0], word_sets)
+            None if pattern[0].endswith("?") else token_sets.get(pattern[0])
             for pattern, _ in rewrites),
         action_nouns=dict(raw["action_nouns"]["words"]),
         chain_verbs=frozenset(raw["chain_verbs"]["words"]),
