@@ -27,6 +27,7 @@ import dataclasses
 import re
 from collections.abc import Collection
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from app.domain.analysis.clause_roles import Step, parse_clause
 from app.domain.analysis.clauses import (
@@ -202,21 +203,10 @@ def _strip_manner(words: list[str], knowledge: Knowledge) -> list[str]:
     return [*words[:1], *text.split()]
 
 
-_MANNER_PHRASES: dict[int, tuple[dict[str, tuple[str, ...]], tuple[str, ...]]] = {}
-
-
+@lru_cache(maxsize=16)
 def _manner_phrases(knowledge: Knowledge) -> tuple[str, ...]:
-    """The manner cues, longest first, gathered once per cue table (held, so its id stays
-    its own while the entry lives) instead of on every clause."""
-    cues = knowledge.cues
-    held = _MANNER_PHRASES.get(id(cues))
-    if held is not None and held[0] is cues:
-        return held[1]
-    phrases = {p for name in ("hurry", "max_speed", "careful") for p in cues.get(name, ())
-               if " " in p or p.endswith("ly")}
+    """The manner cues, gathered once per `Knowledge` instead of on every clause."""
+    phrases = {p for name in ("hurry", "max_speed", "careful")
+               for p in knowledge.cues.get(name, ()) if " " in p or p.endswith("ly")}
     # Longest first; equal lengths alphabetically, so the order never follows a set's.
-    ordered = tuple(sorted(phrases, key=lambda p: (-len(p), p)))
-    if len(_MANNER_PHRASES) >= 16:
-        _MANNER_PHRASES.clear()
-    _MANNER_PHRASES[id(cues)] = (cues, ordered)
-    return ordered
+    return tuple(sorted(phrases, key=lambda p: (-len(p), p)))

@@ -48,6 +48,9 @@ class PhraseEncoder:
         return tuple(i for i in self._tokenizer.encode(word, add_special_tokens=False).ids
                      if i != self._unknown)
 
+    def _piece_ids(self, text: str) -> list[int]:
+        return [i for word in text.split() for i in self._word_pieces(word)]
+
     def encode(self, texts: Sequence[str]) -> Vectors:
         """Embed texts as unit-length rows (a text with no known word-piece gives a zero row).
 
@@ -62,7 +65,7 @@ class PhraseEncoder:
         if self._direct:
             raw = np.zeros((len(texts), self.dim), dtype=np.float32)
             for row, text in enumerate(texts):
-                ids = [i for word in text.split() for i in self._word_pieces(word)]
+                ids = self._piece_ids(text)
                 if ids:
                     raw[row] = self._table[ids].mean(axis=0)
         else:
@@ -78,7 +81,7 @@ class PhraseEncoder:
         if not self._direct:
             row: Vectors = self.encode([text])[0]
             return row
-        ids = [i for word in text.split() for i in self._word_pieces(word)]
+        ids = self._piece_ids(text)
         if not ids:
             return np.zeros(self.dim, dtype=np.float32)
         # np.mean's own steps without its Python wrapper: a float32 sum, divided by the count

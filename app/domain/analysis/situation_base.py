@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from app.domain.analysis.context import Context
-from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR
+from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge
 from app.domain.analysis.scene_view import PersonView
 from app.domain.analysis.word_filter import TEXT_MEMO_SIZE, candidates, may_occur
 
@@ -191,8 +191,15 @@ def has_condition(ctx: Context, person: PersonView, condition: str) -> bool:
         p.id for p in named_people(ctx)}
 
 
-_SUBSTANCE_PATTERNS: dict[int, tuple[tuple[str, ...], re.Pattern[str]]] = {}
 _NEGATORS = frozenset({"no", "without", "not", "never", "non", "instead"})
+
+
+@lru_cache(maxsize=16)
+def _substance_lexicon(knowledge: Knowledge) -> tuple[tuple[str, ...], re.Pattern[str]]:
+    """The substance words, longest first, and one whole-word pattern for all of them."""
+    words = tuple(sorted(knowledge.substance_words, key=len, reverse=True))
+    return words, re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in words)
+                             + r")(?![\w'-])")
 
 
 def substances_in(ctx: Context, text: str) -> list[str]:
@@ -206,13 +213,7 @@ def substances_in(ctx: Context, text: str) -> list[str]:
         Substance names, in order of first occurrence, without repeats.
     """
     table = ctx.knowledge.substance_words
-    cached = _SUBSTANCE_PATTERNS.get(id(table))
-    if cached is None:
-        words = tuple(sorted(table, key=len, reverse=True))
-        cached = words, re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in words)
-                                   + r")(?![\w'-])")
-        _SUBSTANCE_PATTERNS[id(table)] = cached
-    words, pattern = cached
+    words, pattern = _substance_lexicon(ctx.knowledge)
     if not may_occur(text, words):
         return []
     found: list[str] = []
