@@ -65,7 +65,7 @@ class ParsedCommand:
 
     steps: tuple[Step, ...]
     facts: CommandFacts
-    text: str = ""  # the command as `normalize` gives it
+    text: str  # the command as `normalize` gives it (the rules read this, not the raw one)
     not_understood: tuple[Gap, ...] = ()
     devices: dict[int, str] = field(default_factory=dict)
 
