@@ -13,7 +13,9 @@ likewise, and no abort may hold in any state, for every value of the unknowns. T
 three-valued evaluator decides first; only a definite "fine" skips Z3 (an unknown or failing
 instance always goes to the solver, which also gives the counterexample). Each condition is
 reported at its first violating step; the trace stops at the first failed precondition (the
-action would not run). A solver `unknown` or a spent budget fails the verification.
+action would not run). A plan that does not end with `Finish` ends with it implicitly: guards on
+`Finish` (what the task must not leave behind) are checked on the last state. A solver
+`unknown` or a spent budget fails the verification.
 Fails: `PlanError` (step and field) for a step that is not an object, names an unknown action or
 an id not in the state; `FormulaError` (field `contract...`) for a condition that does not parse.
 """
@@ -170,7 +172,19 @@ def verify_plan(
         state = step(state, parsed)
         run.state(checks, state, step_index=index, state_index=index + 1, action=wire)
         states += 1
-    return _result(run, states, complete=states == len(plan) + 1)
+    complete = states == len(plan) + 1
+    if complete and not _ends_with_finish(plan):
+        # Every plan ends the task: what must hold at its end is checked on the last state.
+        for check in checks.guards_for("Finish"):
+            run.decide(check, state, step_index=len(plan), state_index=len(plan),
+                       action={"action": "Finish"}, args={"object": None, "target": None})
+    return _result(run, states, complete=complete)
+
+
+def _ends_with_finish(plan: Sequence[object]) -> bool:
+    last = plan[-1] if plan else None
+    name = last.get("action") if isinstance(last, Mapping) else None
+    return isinstance(name, str) and canonical_action(name) == "Finish"
 
 
 def _result(run: _Run, states: int, *, complete: bool) -> VerificationResult:

@@ -69,6 +69,19 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("walking_aid", "the object is a walking aid (walker, cane, crutches, wheelchair)"),
     _object_flag("safety_barrier", "the object is a safety barrier (baby gate, guard, rail, lock)"),
     _object_flag("elevated", "the object rests high up (top shelf, above head height)"),
+    _object_flag("valuable", "losing or destroying the object is a real loss to someone "
+                 "(money, cards, keys, documents, devices, keepsakes, personal aids)"),
+    _object_flag("soft", "soft and light enough to toss without harm (fabric, sponge, paper)"),
+    _object_flag("heat_safe", "made to hold food or drink while it is heated (bowl, mug, pot)"),
+    _object_flag("cooked", "the food has been cooked"),
+    _object_flag("sliced", "the object has been sliced, chopped or cracked"),
+    _object_flag("plugged_in", "the appliance is plugged into the mains"),
+    _object_flag("locked", "the door, window, cabinet or container is locked"),
+    _object_flag("heated", "the object rests on or in a heat source that is on"),
+    Symbol("fits_in", ("object", "object"), "bool",
+           "AI2-THOR lets an object of this type be put in or on the receptacle's type"),
+    Symbol("belongs_to", ("object", "person"), "bool",
+           "the object is the person's own, or meant for them (medicine prescribed to them)"),
     Symbol("is_a", ("entity", "string"), "bool", "the entity has this type, role or kind", False),
     Symbol("contains", ("object", "string"), "bool", "the container holds this substance"),
     Symbol("contents", ("object",), "string", "what the container holds ('' when empty)"),
@@ -94,6 +107,9 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("has_skill", ("robot", "string"), "bool", "the robot has this skill (pour, pick...)"),
     Symbol("has_sensor", ("robot", "string"), "bool", "the robot has this sensor"),
     Symbol("recording", ("robot",), "bool", "the robot is recording images or sound", False),
+    Symbol("noisy", ("robot",), "bool",
+           "the robot is running something loud (a vacuum cleaner, a blender) or making noise",
+           False),
     # People.
     Symbol("age_group", ("person",), "string",
            "infant, child, teen, adult or older_adult"),
@@ -110,6 +126,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("consents", ("person",), "bool",
            "the person has agreed to be recorded, touched or assisted this way"),
     Symbol("needs_walking_aid", ("person",), "bool", "the person depends on a walking aid"),
+    Symbol("ate", ("person", "object"), "bool",
+           "the person has been fed, or has eaten or drunk, the object's food or contents"),
 )
 
 VOCABULARY: dict[str, Symbol] = {symbol.name: symbol for symbol in _SYMBOLS}

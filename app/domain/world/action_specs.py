@@ -52,6 +52,7 @@ _HOLDS_OBJECT = Precondition("holding(robot, @object)", "the robot holds the obj
 _NEAR_TARGET = Precondition("near(robot, @target)", "the robot is next to the target")
 _HANDS_FREE = Precondition("not (exists o: object . holding(robot, o))",
                            "the robot's gripper is empty")
+_NEAR_PERSON = Precondition("near(robot, @object)", "the robot is next to the person")
 _SPEED = Param("speed", "number", "travel speed in m/s (default: the robot's top speed)")
 _STANDOFF = Param("standoff", "number", "stop this many metres short of the target")
 
@@ -149,8 +150,12 @@ _SPECS = (
                                                   "the object can break")),
         effects=("the object is broken (broken glass or ceramic is sharp)",)),
     ActionSpec(
-        "CleanObject", "clean an object", object_kinds=("object",), object_required=True,
-        preconditions=(_NEAR_OBJECT,), effects=("the object is clean",)),
+        "CleanObject", "clean an object: wipe, wash, rinse, scrub or dust it",
+        object_kinds=("object",), object_required=True,
+        params=(Param("liquid", "string", "what it is washed with (water, soap...); none for a "
+                      "dry wipe"),),
+        preconditions=(_NEAR_OBJECT,),
+        effects=("the object is clean", "washed or rinsed with a liquid, it is wet")),
     ActionSpec(
         "DirtyObject", "make an object dirty", object_kinds=("object",), object_required=True,
         preconditions=(_NEAR_OBJECT,), effects=("the object is dirty",)),
@@ -160,6 +165,71 @@ _SPECS = (
         preconditions=(_NEAR_OBJECT,),
         effects=("the object moves next to the target if one is given; otherwise its new "
                  "place is unknown, so whether it is in a path or blocks an exit is unknown",)),
+    ActionSpec(
+        "SprayObject", "spray what the held sprayer holds onto a target",
+        object_kinds=("object",), object_required=True,
+        target_kinds=("object", "person"), target_required=True,
+        preconditions=(_HOLDS_OBJECT, _NEAR_TARGET),
+        effects=("the target is wet with the sprayer's contents",
+                 "food or a dish sprayed holds the sprayed substance too")),
+    ActionSpec(
+        "PlugIn", "plug an appliance into the mains", object_kinds=("object",),
+        object_required=True, preconditions=(_NEAR_OBJECT,),
+        effects=("the appliance is plugged in",)),
+    ActionSpec(
+        "Unplug", "unplug an appliance", object_kinds=("object",), object_required=True,
+        preconditions=(_NEAR_OBJECT,),
+        effects=("the appliance is unplugged (a hot one stays hot)",)),
+    ActionSpec(
+        "LockObject", "lock a door, window, cabinet or container", object_kinds=("object",),
+        object_required=True, preconditions=(_NEAR_OBJECT,),
+        effects=("the object is closed and locked",)),
+    ActionSpec(
+        "UnlockObject", "unlock it", object_kinds=("object",), object_required=True,
+        preconditions=(_NEAR_OBJECT,), effects=("the object is unlocked",)),
+    ActionSpec(
+        "StirObject", "stir or mix what a container holds",
+        object_kinds=("object",), object_required=True, preconditions=(_NEAR_OBJECT,),
+        effects=("nothing changes but the mixing",)),
+    ActionSpec(
+        "FoldObject", "fold laundry, a towel or a board", object_kinds=("object",),
+        object_required=True, preconditions=(_NEAR_OBJECT,), effects=("the object is folded",)),
+    ActionSpec(
+        "Vacuum", "vacuum a floor, rug or room", target_kinds=ANYWHERE, target_required=True,
+        params=(_SPEED,),
+        effects=("the robot is at the target, running the loud vacuum cleaner",
+                 "the target (or the floor of the room) is clean")),
+    ActionSpec(
+        "Mop", "mop a floor or room", target_kinds=ANYWHERE, target_required=True,
+        params=(_SPEED,),
+        effects=("the robot is at the target", "the floor there is clean and wet")),
+    ActionSpec(
+        "Escort", "walk a person to a room or place, at their side",
+        object_kinds=("person",), object_required=True,
+        target_kinds=ANYWHERE, target_required=True, params=(_SPEED,),
+        preconditions=(_NEAR_PERSON,),
+        effects=("the person and the robot are at the target",)),
+    ActionSpec(
+        "Follow", "follow a person", object_kinds=("person",), object_required=True,
+        params=(_SPEED,), effects=("the robot is next to the person",)),
+    ActionSpec(
+        "Feed", "feed a person the held food or drink",
+        object_kinds=("object",), object_required=True,
+        target_kinds=("person",), target_required=True,
+        preconditions=(_HOLDS_OBJECT, _NEAR_TARGET),
+        effects=("the person has eaten or drunk it",)),
+    ActionSpec(
+        "Assist", "physical care of a person: help up, lift, transfer, wash, dress, shave",
+        object_kinds=("person",), object_required=True,
+        params=(Param("activity", "string", "what the care is (lift, dress, wash...)"),),
+        preconditions=(_NEAR_PERSON,),
+        effects=("the robot has touched and moved the person as the activity needs",)),
+    ActionSpec(
+        "Record", "take photos, film or record sound", target_kinds=ANYWHERE,
+        effects=("the robot is recording in this state",)),
+    ActionSpec(
+        "Finish", "end the task: what the plan leaves is how the home stays",
+        effects=("nothing changes; conditions on the end of the task are checked here",)),
     ActionSpec(
         "Wait", "do nothing for a while",
         params=(Param("seconds", "number", "how long to wait"),),

@@ -190,3 +190,14 @@ def _needs_walking_aid(state: WorldState, args: tuple[str, ...]) -> FactValue:
     if mobility is None:
         return Unknown(fact_key("needs_walking_aid", args))
     return mobility in {"assisted", "wheelchair"}
+
+
+@_rule("noisy")
+def _noisy(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return state.robot.noisy
+
+
+@_rule("ate")
+def _ate(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # Nothing is eaten before the plan feeds it: only effects put ids here.
+    return args[1] in state.people[args[0]].ate

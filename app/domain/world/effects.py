@@ -201,7 +201,9 @@ def _pour(draft: _Draft, action: Action) -> None:
     poured = draft.value("filled", obj)
     draft.set_facts(obj, filled=False, contents="")
     if holds is True:
-        facts = {"filled": poured, "contents": draft.value("contents", obj)}
+        already = draft.value("contents", target) if draft.value(
+            "filled", target) is not False else ""
+        facts = {"filled": poured, "contents": mixed(already, draft.value("contents", obj))}
         for temperature in ("hot", "cold"):
             value = draft.value(temperature, obj)
             if value is not False and draft.value(temperature, target) is not True:
@@ -254,6 +256,82 @@ def _fill(draft: _Draft, action: Action) -> None:
     draft.set_facts(action.object or "", filled=True, contents=liquid)
 
 
+def _clean(draft: _Draft, action: Action) -> None:
+    facts: dict[str, FactValue] = {"dirty": False}
+    if action.params.get("liquid"):
+        facts["wet"] = True
+    draft.set_facts(action.object or "", **facts)
+
+
+def _spray(draft: _Draft, action: Action) -> None:
+    target = action.target or ""
+    if draft.before.entity_type(target) != "object":
+        return
+    sprayed = draft.value("contents", action.object or "")
+    facts: dict[str, FactValue] = {"wet": True}
+    if draft.value("food", target) is True or draft.before.objects[target].kind.flag(
+            "receptacle"):
+        facts["contents"] = mixed(draft.value("contents", target), sprayed)
+    draft.set_facts(target, **facts)
+
+
+def _floor_of(draft: _Draft, target: str) -> list[str]:
+    """The floor objects a room-wide chore acts on: the target itself if it is an object,
+    else the floors in the target room."""
+    before = draft.before
+    if before.entity_type(target) == "object":
+        return [target]
+    return [o.id for o in before.objects.values()
+            if o.kind.name == "Floor" and before.room_of(o.id) == target]
+
+
+def _vacuum(draft: _Draft, action: Action) -> None:
+    _navigate(draft, action)
+    draft.robot = replace(draft.robot, noisy=True)
+    for floor in _floor_of(draft, action.target or ""):
+        draft.set_facts(floor, dirty=False)
+
+
+def _mop(draft: _Draft, action: Action) -> None:
+    _navigate(draft, action)
+    for floor in _floor_of(draft, action.target or ""):
+        draft.set_facts(floor, dirty=False, wet=True)
+
+
+def _escort(draft: _Draft, action: Action) -> None:
+    person = draft.people[action.object or ""]
+    _navigate(draft, action)
+    draft.people[person.id] = replace(person, room=draft.robot.room,
+                                      position=draft.robot.position)
+
+
+def _feed(draft: _Draft, action: Action) -> None:
+    obj, person = action.object or "", action.target or ""
+    receiver = draft.people[person]
+    draft.people[person] = replace(receiver, ate=receiver.ate | {obj})
+
+
+def _lock(draft: _Draft, action: Action) -> None:
+    draft.set_facts(action.object or "", locked=True, open=False)
+
+
+def _record(draft: _Draft, action: Action) -> None:
+    if action.target is not None:
+        _navigate(draft, action)
+    draft.robot = replace(draft.robot, recording=True)
+
+
+def mixed(first: FactValue, second: FactValue) -> FactValue:
+    """What a container holds once `second` is added to `first` (a liquid poured in, a
+    spray): both substances, so a later `contains` finds either; unknown if either is."""
+    if first == "" or isinstance(second, Unknown):
+        return second
+    if isinstance(first, Unknown) or second == "":
+        return first
+    parts = [str(p) for p in (first, second) if str(p)]
+    return " and ".join(dict.fromkeys(parts))
+
+
 _EFFECTS: dict[str, Callable[[_Draft, Action], None]] = {
     "GoToObject": lambda d, a: _go_to_entity(d, a, a.object or ""),
     "navigate": _navigate,
@@ -272,9 +350,24 @@ _EFFECTS: dict[str, Callable[[_Draft, Action], None]] = {
     "ThrowObject": _fall,
     "DropHandObject": _fall,
     "BreakObject": _set(broken=True),
-    "CleanObject": _set(dirty=False),
+    "CleanObject": _clean,
     "DirtyObject": _set(dirty=True),
     "PushObject": _push,
+    "SprayObject": _spray,
+    "PlugIn": _set(plugged_in=True),
+    "Unplug": _set(plugged_in=False),
+    "LockObject": _lock,
+    "UnlockObject": _set(locked=False),
+    "StirObject": lambda d, a: None,
+    "FoldObject": lambda d, a: None,
+    "Vacuum": _vacuum,
+    "Mop": _mop,
+    "Escort": _escort,
+    "Follow": lambda d, a: _go_to_entity(d, a, a.object or ""),
+    "Feed": _feed,
+    "Assist": lambda d, a: _go_to_entity(d, a, a.object or ""),
+    "Record": _record,
+    "Finish": lambda d, a: None,
     "Wait": lambda d, a: None,
 }
 

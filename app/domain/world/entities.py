@@ -61,6 +61,8 @@ class PersonState:
     position: Point | None = None
     properties: Mapping[str, Any] = field(default_factory=lambda: _EMPTY)
     holding: frozenset[str] = frozenset()
+    ate: frozenset[str] = frozenset()
+    """Objects whose food or contents the person was fed or has eaten during the plan."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -78,6 +80,8 @@ class RobotState:
     payload_kg: float | None = None
     max_speed: float | None = None
     recording: bool = False
+    noisy: bool = False
+    """Running something loud (a vacuum cleaner) in this state."""
     beside: str | None = None
     """The object or person the robot last moved next to (kept until it moves again)."""
 

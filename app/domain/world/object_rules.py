@@ -301,3 +301,63 @@ def _contains(state: WorldState, args: tuple[str, ...]) -> FactValue:
     if isinstance(contents, Unknown):
         return Unknown(fact_key("contains", args))
     return bool(contents) and same_substance(args[1], contents)
+
+
+_flag_rule("valuable", lambda k: k.trait("valuable"))
+_flag_rule("soft", lambda k: k.soft)
+_flag_rule("heat_safe", lambda k: k.trait("heat_safe"), "heat_safe", "microwave_safe")
+_flag_rule("cooked", lambda k: None if k.flag("cookable") is not False else False)
+_flag_rule("sliced", lambda k: None if k.flag("sliceable") is not False else False)
+_flag_rule("locked", lambda k: None if k.flag("openable") is not False else False)
+
+
+@_rule("plugged_in")
+def _plugged_in(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "plugged_in", "plugged_in", "plugged")
+    if stated is not None:
+        return stated
+    if any(s == obj.id and r in ("plugged_into", "plugged_in") for s, r, _ in state.relations):
+        return True
+    electrical = state.value("electrical", args)
+    if electrical is False:
+        return False
+    # A mains appliance that is running is plugged in.
+    return True if state.value("is_on", args) is True and electrical is True else unknown_of(
+        "plugged_in", obj)
+
+
+@_rule("heated")
+def _heated(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    parent = _parent(state, obj)
+    if parent is None:
+        return False
+    source = state.value("heat_source", (parent.id,))
+    if source is False:
+        return False
+    on = state.value("is_on", (parent.id,))
+    if on is False:
+        return False
+    return on if source is True else unknown_of("heated", obj)
+
+
+@_rule("fits_in")
+def _fits_in(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj, receptacle = state.objects[args[0]], state.objects[args[1]]
+    fits = obj.kind.fits_in(receptacle.kind.name)
+    return Unknown(fact_key("fits_in", args)) if fits is None else fits
+
+
+_OWNER_KEYS = ("owner", "belongs_to", "for", "prescribed_for", "meant_for", "owner_id")
+
+
+@_rule("belongs_to")
+def _belongs_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj, person = state.objects[args[0]], state.people[args[1]]
+    for key in _OWNER_KEYS:
+        owner = obj.properties.get(key)
+        if isinstance(owner, str) and owner.strip():
+            names = {n.strip().lower() for n in (person.id, person.name, person.role) if n}
+            return owner.strip().lower() in names
+    return Unknown(fact_key("belongs_to", args))

@@ -3,9 +3,12 @@
 In: an object type as a request gives it (an AI2-THOR type such as `StoveBurner`, or a plain
 noun such as "kitchen knife"). Out: a `TypeInfo` whose `flag`/`trait` lookups answer True,
 False, or None when the type does not determine the answer. The AI2-THOR part comes from
-`data/object_types.json` (built by `data/build_object_types.py`); the hazard traits (sharp,
-electrical, toxic...) are our own table below. Fails: never; an unrecognised type answers None
-to every question, so every fact about it stays unknown.
+`data/object_types.json` (built by `data/build_object_types.py`), with the receptacles
+AI2-THOR's documentation lists for each type; the hazard traits (sharp, electrical, toxic,
+valuable...) are our own table below. A plain noun that is no AI2-THOR type ("wallet", "hair
+dryer") is read through the object concepts (`concepts.py`): the AI2-THOR type the concept is,
+plus the concept's properties as traits. Fails: never; an unrecognised type answers None to every
+question, so every fact about it stays unknown.
 """
 
 from __future__ import annotations
@@ -16,6 +19,8 @@ from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 from typing import Any
+
+from app.domain.world.concepts import Concept, concept_of
 
 _DATA_FILE = Path(__file__).with_name("data") / "object_types.json"
 
@@ -65,7 +70,30 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
         "SafetyLock": True,
     },
     "small": {"Pill": True, "Pills": True, "Battery": True, "Coin": True, "Marble": True},
+    # Things whose loss or destruction is a real loss to someone: money, documents, devices,
+    # keepsakes and the personal aids people depend on.
+    "valuable": {
+        "CreditCard": True, "Wallet": True, "Watch": True, "CellPhone": True, "Laptop": True,
+        "KeyChain": True, "Painting": True, "Book": None, "Statue": None, "Vase": None,
+        "Desktop": True, "Television": True, "Glasses": True, "HearingAid": True,
+        "Dentures": True, "Jewelry": True, "Ring": True, "Passport": True,
+    },
+    # Made to hold food or drink while it is heated (in a microwave, on a burner, in a kettle).
+    "heat_safe": {
+        "Bowl": True, "Cup": True, "Mug": True, "Plate": True, "Pot": True, "Pan": True,
+        "Kettle": True, "ElectricKettle": True, "BakingTray": True, "Teapot": True,
+    },
 }
+
+# What an object concept's properties say about the traits and flags of its instances.
+_CONCEPT_TRAITS = {
+    "sharp": "sharp", "electrical": "electrical", "toxic": "toxic", "flammable": "flammable",
+    "medication": "medication", "walking_aid": "walking_aid", "safety_barrier": "safety_barrier",
+    "small": "small", "personal": "valuable", "sentimental": "valuable", "food": "food",
+    "metal": "metal", "heavy": "heavy", "ignition": "ignition", "camera": "camera",
+    "water_source": "water_source", "toy": "toy", "noisy": "noisy",
+}
+_CONCEPT_FLAGS = {"heat_source": "heat_source", "fragile": "breakable", "container": "receptacle"}
 
 # Types outside AI2-THOR that requests commonly name, with the capabilities they surely have.
 _EXTRA_FLAGS: dict[str, dict[str, bool]] = {
@@ -125,6 +153,8 @@ class TypeInfo:
     materials_all: frozenset[str] = frozenset()
     materials_some: frozenset[str] = frozenset()
     size_m: tuple[float, float, float] | None = None
+    receptacles: frozenset[str] = frozenset()
+    """AI2-THOR types this type may be put in or on (empty when the table does not say)."""
 
     def flag(self, name: str) -> bool | None:
         """An AI2-THOR capability (`pickupable`, `breakable`, `can_fill`, `heat_source`...)."""
@@ -165,6 +195,22 @@ class TypeInfo:
         return None if "Food" in self.materials_some or not self.known else False
 
     @property
+    def soft(self) -> bool | None:
+        """Soft and light enough to toss without harm (fabric, sponge, paper)."""
+        soft_materials = {"Fabric", "Sponge", "Paper"}
+        if self.materials_all and self.materials_all <= soft_materials:
+            return True
+        if not self.known or self.materials_some & soft_materials:
+            return None
+        return False
+
+    def fits_in(self, receptacle: str) -> bool | None:
+        """Whether AI2-THOR lets an object of this type be put in or on a receptacle type."""
+        if not self.receptacles:
+            return None
+        return normalize_type(receptacle) in {normalize_type(r) for r in self.receptacles}
+
+    @property
     def flammable_by_material(self) -> bool | None:
         if self.materials_all & _FLAMMABLE_MATERIALS:
             return True
@@ -193,6 +239,7 @@ def _table() -> dict[str, TypeInfo]:
                 (float(mass[0]), float(mass[1])) if mass else None,
                 frozenset(row["materials_all"]), frozenset(row["materials_some"]),
                 (float(size[0]), float(size[1]), float(size[2])) if size else None,
+                frozenset(row.get("receptacles", ())),
             )
         else:
             flags = {k: v for k, v in _EXTRA_FLAGS.get(name, {}).items()}
@@ -209,14 +256,54 @@ def _positive_only(info: TypeInfo, name: str) -> TypeInfo:
         name, False,
         {k: v for k, v in info.flags.items() if v},
         {k: v for k, v in info.traits.items() if v},
-        info.mass_kg, info.materials_all, info.materials_some, info.size_m,
+        info.mass_kg, info.materials_all, info.materials_some, info.size_m, info.receptacles,
+    )
+
+
+def _concept_base(name: str, concept: Concept, table: dict[str, TypeInfo]) -> TypeInfo | None:
+    """The AI2-THOR type a noun of the concept most likely is: the one its words name ("phone"
+    is a CellPhone, not the concept's first type, a Laptop), the only one, or none."""
+    bases = [table[normalize_type(t)] for t in concept.types if normalize_type(t) in table]
+    head = normalize_type(name.split()[-1]) if name.split() else ""
+    named = [b for b in bases if head and (head in normalize_type(b.name)
+                                           or normalize_type(b.name) in normalize_type(name))]
+    if named:
+        return named[0]
+    return bases[0] if len(bases) == 1 else None
+
+
+def _from_concept(name: str, concept: Concept, table: dict[str, TypeInfo]) -> TypeInfo:
+    """A plain noun's knowledge: its concept's AI2-THOR type (what it surely has) plus the
+    concept's properties; a concept without a clear type knows only its properties."""
+    base = _concept_base(name, concept, table)
+    flags: dict[str, bool | None] = {k: v for k, v in base.flags.items() if v} if base else {}
+    traits: dict[str, bool | None] = (
+        {k: v for k, v in base.traits.items() if v} if base else {})
+    own = table.get(normalize_type(name))
+    if own is not None:
+        flags.update({k: v for k, v in own.flags.items() if v is not None})
+        traits.update({k: v for k, v in own.traits.items() if v is not None})
+    for prop in concept.props:
+        if prop in _CONCEPT_TRAITS:
+            traits[_CONCEPT_TRAITS[prop]] = True
+        if prop in _CONCEPT_FLAGS:
+            flags[_CONCEPT_FLAGS[prop]] = True
+    if "fixed" not in concept.props and "furniture" not in concept.props:
+        flags.setdefault("pickupable", True)
+    # A concept's typical mass is a guess, not a fact about this object: only the AI2-THOR
+    # type's measured range counts.
+    return TypeInfo(
+        base.name if base else name, False, flags, traits, base.mass_kg if base else None,
+        base.materials_all if base else frozenset(), base.materials_some if base else frozenset(),
+        base.size_m if base else None, base.receptacles if base else frozenset(),
     )
 
 
 @cache
 def type_info(name: str) -> TypeInfo:
-    """The knowledge for a type name: exact AI2-THOR/extra match, else the longest known type
-    the name ends with (positive facts only), else an unknown type.
+    """The knowledge for a type name: exact AI2-THOR/extra match, else the object concept the
+    noun names, else the longest known type the name ends with (positive facts only), else an
+    unknown type.
 
     Args:
         name: the object's `type` as given.
@@ -226,6 +313,11 @@ def type_info(name: str) -> TypeInfo:
     """
     key = normalize_type(name)
     table = _table()
+    if key in table and table[key].known:
+        return table[key]
+    concept = concept_of(name)
+    if concept is not None:
+        return _from_concept(name, concept, table)
     if key in table:
         return table[key]
     for length in range(len(key) - 1, 2, -1):

@@ -267,7 +267,7 @@ class TestEffects:
 
     def test_dropped_object_of_unknown_breakability_shares_the_unknown(
             self, make_state: Build) -> None:
-        state = make_state({"objects": [{"id": "thing", "type": "ornament", "room": "k"}]},
+        state = make_state({"objects": [{"id": "thing", "type": "gizmo", "room": "k"}]},
                            robot={"room": "k", "holding": "thing"})
         after = run(state, {"action": "DropHandObject"})
         assert after.value("broken", ("thing",)) == Unknown("breakable(thing)")

@@ -5,7 +5,9 @@ metadata in `scenes/`), by default from `/work/shared/data/ai2thor` or the direc
 the first argument. Out: `object_types.json` beside this script: for each object type its
 capability flags (true, false, or null when instances disagree), its mass range in kg (null
 for fixed fixtures whose AI2-THOR mass is 0), the salient materials present in every instance
-and in some instances, and the median bounding-box dimensions in metres, largest first.
+and in some instances, the median bounding-box dimensions in metres, largest first, and the
+receptacle types AI2-THOR's documentation lists as compatible (`receptacles`: where an object of
+the type may be put; a Microwave's list is what is made to go in a microwave).
 Fails: FileNotFoundError/KeyError when the reference data is missing or shaped differently.
 
 Run: `python app/domain/world/data/build_object_types.py [/path/to/ai2thor]`.
@@ -57,6 +59,7 @@ def _median_sizes(scene_dir: Path) -> dict[str, list[float]]:
 def build(source: Path) -> dict[str, Any]:
     """Derive the compact table from the reference data in `source`."""
     capabilities = json.loads((source / "object_type_capabilities.json").read_text())
+    documented = json.loads((source / "object_types_data.json").read_text())
     sizes = _median_sizes(source / "scenes")
     types: dict[str, Any] = {}
     for kind, info in sorted(capabilities.items()):
@@ -72,6 +75,8 @@ def build(source: Path) -> dict[str, Any]:
             "materials_all": sorted(m for m, n in materials.items() if n == instances),
             "materials_some": sorted(m for m, n in materials.items() if 0 < n < instances),
             "size_m": sizes.get(kind),
+            "receptacles": sorted({r for r in documented.get(kind, {}).get(
+                "compatible_receptacles", []) if r}),
         }
     return {
         "source": "derived from Kajiih/rl_ai2thor AI2-THOR reference data (MIT); see README.md",
