@@ -13,6 +13,7 @@
 
 from __future__ import annotations
 
+import functools
 import os
 import uuid
 from collections.abc import Iterator
@@ -22,8 +23,10 @@ import pytest
 from pytest_postgresql import factories
 from sqlalchemy import Engine, create_engine, make_url, text
 
+from app.domain.models import HazardTemplate
 from app.store.db import create_engine_for, migrate
 from app.store.repository import Repository
+from app.store.seed import load_library
 
 POSTGRES_URL_ENV = "SAFEGATE_TEST_POSTGRES_URL"
 PG_CTL_AS_POSTGRES = Path(__file__).parent / "store" / "pg_ctl_as_postgres.py"
@@ -92,3 +95,9 @@ def migrated_engine(database_url: str) -> Iterator[Engine]:
 def repository(migrated_engine: Engine) -> Repository:
     """A `Repository` on a freshly migrated database."""
     return Repository(migrated_engine)
+
+
+@functools.cache
+def seed_library() -> tuple[HazardTemplate, ...]:
+    """The seed Hazard Template Library (`templates_db/`), read once per test process."""
+    return tuple(load_library(Path(__file__).resolve().parents[1] / "templates_db"))

@@ -24,7 +24,7 @@ REQUEST: dict[str, Any] = {
              "properties": {"mass_kg": 0.3}},
             {"id": "counter_1", "type": "CounterTop", "room": "kitchen"},
             {"id": "knife_1", "type": "Knife", "room": "kitchen", "properties": {"sharp": True}},
-            {"id": "parcel_1", "type": "Parcel", "room": "kitchen"},
+            {"id": "parcel_1", "type": "Gizmo", "room": "kitchen"},
             {"id": "stove_1", "type": "StoveBurner", "room": "kitchen",
              "properties": {"on": False}},
         ],

@@ -23,41 +23,17 @@ import yaml
 from app.domain.formula import check, parse
 from app.domain.models import Category, HazardTemplate, Preventability, VariableType
 from app.domain.smt import Encoding, Outcome, encode_symbolic, satisfiable, valid
+from app.domain.world import CANONICAL_ACTIONS as ACTION_NAMES
 
 LIBRARY_DIR = Path(__file__).resolve().parents[1] / "templates_db"
 
-CANONICAL_ACTIONS = frozenset(
-    {
-        "PickupObject",
-        "PutObject",
-        "OpenObject",
-        "CloseObject",
-        "ToggleObjectOn",
-        "ToggleObjectOff",
-        "SliceObject",
-        "ThrowObject",
-        "DropHandObject",
-        "BreakObject",
-        "CleanObject",
-        "DirtyObject",
-        "PushObject",
-        "FillWithLiquid",
-        "EmptyLiquid",
-        "Pour",
-        "Cook",
-        "HandOver",
-        "GoToObject",
-        "navigate",
-        "Wait",
-    }
-)
+CANONICAL_ACTIONS = frozenset(ACTION_NAMES)
 
 ENTITY_VARIABLE_TYPES = frozenset(
     {VariableType.OBJECT, VariableType.PERSON, VariableType.ROOM, VariableType.ENTITY}
 )
 ENTITY_VARIABLE_NAMES = frozenset({"obj", "other", "person", "room", "aid"})
 
-_TAXONOMY_ROW = re.compile(r"^\|\s*(\w+)\s*\|\s*`([a-z_]+)`\s*\|")
 
 
 def _library_files() -> list[Path]:
@@ -84,14 +60,9 @@ def _templates() -> tuple[HazardTemplate, ...]:
 
 
 def _taxonomy() -> dict[str, str]:
-    """Hazard class -> category, read from the README's taxonomy table."""
-    readme = (LIBRARY_DIR / "README.md").read_text(encoding="utf-8")
-    table: dict[str, str] = {}
-    for line in readme.splitlines():
-        match = _TAXONOMY_ROW.match(line)
-        if match:
-            table[match.group(2)] = match.group(1)
-    return table
+    """Hazard class -> category, read from the taxonomy file the README points to."""
+    raw = yaml.safe_load((LIBRARY_DIR / "taxonomy" / "hazard_classes.yaml").read_text())
+    return {name: row["category"] for name, row in raw["classes"].items()}
 
 
 def _condition_cases() -> list[Any]:
@@ -125,7 +96,7 @@ class TestLibraryFiles:
 
 
 class TestLibraryCoverage:
-    def test_taxonomy_is_read_from_the_readme(self) -> None:
+    def test_taxonomy_is_read_from_its_file(self) -> None:
         taxonomy = _taxonomy()
         assert len(taxonomy) >= 40
         assert set(taxonomy.values()) == {c.value for c in Category}

@@ -15,7 +15,13 @@ from collections.abc import Iterable, Mapping, Sequence
 
 from pydantic import BaseModel, ConfigDict, field_serializer
 
-from app.domain.models import HazardProposal, HazardReport, HazardTemplate, VariableType
+from app.domain.models import (
+    HazardProposal,
+    HazardReport,
+    HazardTemplate,
+    TemplateScope,
+    VariableType,
+)
 
 BindingValue = str | float | bool
 
@@ -79,6 +85,11 @@ class TemplateIndex:
         self.templates: tuple[HazardTemplate, ...] = tuple(
             t for group in self._by_class.values() for t in group
         )
+        self.always: tuple[BoundTemplate, ...] = tuple(
+            BoundTemplate(template=t, bindings=_instantiate(t, {})[0],
+                          entity_variables=frozenset())
+            for t in self.templates if t.applies is TemplateScope.ALWAYS)
+        """The baseline envelope: templates bound into every contract."""
 
     def for_class(self, hazard_class: str) -> Sequence[HazardTemplate]:
         return self._by_class.get(hazard_class, ())
@@ -112,6 +123,8 @@ def bind(report: HazardReport, index: TemplateIndex) -> BindingResult:
                 )
             )
             continue
+        if proposal.template_id is not None:
+            candidates = sorted(candidates, key=lambda t: t.id != proposal.template_id)
         matches: list[BoundTemplate] = []
         misses: list[str] = []
         for template in candidates:

@@ -1,7 +1,8 @@
 """Stage 4, Contract Compilation: the Task Safety Contract of an authorized task.
 
-In: the bound hazards from Stage 2. Out: a `Contract` = (invariants, guards, aborts): the union of
-the matched templates' conditions with their variables substituted on the parsed formulas (not by
+In: the bound hazards from Stage 2, and the baseline envelope (templates that apply to every
+task). Out: a `Contract` = (invariants, guards, aborts): the union of the matched and baseline
+templates' conditions with their variables substituted on the parsed formulas (not by
 text replacement), defaults filled, deduplicated by (condition id, bindings), and every formula
 type-checked against the vocabulary after substitution. It also renders the contract as plain
 planning constraints, so a planner can be told the rules before it writes a plan.
@@ -58,11 +59,13 @@ class Contract(BaseModel):
         return len(self.invariants) + len(self.guards) + len(self.aborts)
 
 
-def compile_contract(bound: Iterable[BoundHazard]) -> Contract:
+def compile_contract(bound: Iterable[BoundHazard],
+                     baseline: Iterable[BoundTemplate] = ()) -> Contract:
     """Compile the contract for an authorized task from its bound hazards.
 
     Args:
         bound: every bound hazard with its matched templates.
+        baseline: templates that apply to every task (the baseline envelope), already bound.
 
     Returns:
         The deduplicated, type-checked contract.
@@ -74,13 +77,13 @@ def compile_contract(bound: Iterable[BoundHazard]) -> Contract:
         kind: {} for kind in ConditionKind
     }
     versions: dict[str, int] = {}
-    for hazard in bound:
-        for match in hazard.matches:
-            versions[match.template.id] = match.template.version
-            for kind, condition in match.template.conditions():
-                compiled = _bind_condition(match, kind, condition)
-                key = (compiled.id, render_bindings(compiled.bindings))
-                by_kind[kind].setdefault(key, compiled)
+    matches = [*(m for hazard in bound for m in hazard.matches), *baseline]
+    for match in matches:
+        versions[match.template.id] = match.template.version
+        for kind, condition in match.template.conditions():
+            compiled = _bind_condition(match, kind, condition)
+            key = (compiled.id, render_bindings(compiled.bindings))
+            by_kind[kind].setdefault(key, compiled)
     return Contract(
         invariants=tuple(by_kind[ConditionKind.INVARIANT].values()),
         guards=tuple(by_kind[ConditionKind.GUARD].values()),

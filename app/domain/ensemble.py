@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from typing import TypeVar
 
-from app.domain.models import GateRequest, HazardReport, UnknownFact
+from app.domain.models import GateRequest, HazardReport, HazardTemplate, UnknownFact
 from app.domain.pipeline import Analyzer
 
 ANALYSIS_UNAVAILABLE = "hazard analysis unavailable"
@@ -105,21 +105,25 @@ class EnsembleAnalyzer:
         """The combined analyzers, in order."""
         return self._members
 
-    def analyze(self, request: GateRequest) -> HazardReport:
+    def analyze(self, request: GateRequest,
+                templates: Iterable[HazardTemplate] = ()) -> HazardReport:
         """Run every member and merge their reports.
 
         Args:
             request: the gate request.
+            templates: the active library, passed on to every member.
 
         Returns:
             The union; a member that raised contributes the critical "analysis unavailable".
         """
-        return union_reports((_run(m, request) for m in self._members), self.name)
+        library = tuple(templates)
+        return union_reports((_run(m, request, library) for m in self._members), self.name)
 
 
-def _run(member: Analyzer, request: GateRequest) -> HazardReport:
+def _run(member: Analyzer, request: GateRequest,
+         templates: tuple[HazardTemplate, ...]) -> HazardReport:
     try:
-        return member.analyze(request)
+        return member.analyze(request, templates)
     except Exception as error:
         # Whatever went wrong, the member's silence must not read as "no hazards".
         return failed_report(member.name, type(error).__name__)

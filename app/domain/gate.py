@@ -182,7 +182,9 @@ def _unknowns_about(
 
 
 def _question_about_hazard(hazard: HazardProposal, unknowns: Sequence[UnknownFact]) -> str:
-    settling = _unknowns_about(hazard, unknowns)
+    # A fact about the hazard's own entities settles it best; any other critical unknown of
+    # the same analysis is still a better question than asking to confirm the hazard.
+    settling = _unknowns_about(hazard, unknowns) or [u for u in unknowns if u.critical]
     if settling:
         return _question_about_unknown(settling[0])
     return (

@@ -12,7 +12,7 @@ except the gate's R4 with a compiled contract.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Protocol
 
 from pydantic import BaseModel, ConfigDict
@@ -29,7 +29,7 @@ from app.domain.gate import (
     Rule,
     decide,
 )
-from app.domain.models import GateRequest, HazardReport, UnknownFact
+from app.domain.models import GateRequest, HazardReport, HazardTemplate, UnknownFact
 
 
 class Analyzer(Protocol):
@@ -37,7 +37,8 @@ class Analyzer(Protocol):
 
     name: str
 
-    def analyze(self, request: GateRequest) -> HazardReport: ...
+    def analyze(self, request: GateRequest,
+                templates: Iterable[HazardTemplate] = ()) -> HazardReport: ...
 
 
 class GateResult(BaseModel):
@@ -72,7 +73,7 @@ def run_gate(
     """
     timings: dict[str, float] = {}
     started = clock()
-    report = _analyze_or_fail_closed(analyzer, request)
+    report = _analyze_or_fail_closed(analyzer, request, templates)
     timings["analysis"] = (clock() - started) * 1000
 
     started = clock()
@@ -92,7 +93,7 @@ def run_gate(
     if decision.decision is Decision.AUTHORIZE:
         started = clock()
         try:
-            contract = compile_contract(binding.bound)
+            contract = compile_contract(binding.bound, templates.always)
         except FormulaError as error:
             decision = GateDecision(
                 decision=Decision.DEFER,
@@ -108,9 +109,10 @@ def run_gate(
     )
 
 
-def _analyze_or_fail_closed(analyzer: Analyzer, request: GateRequest) -> HazardReport:
+def _analyze_or_fail_closed(analyzer: Analyzer, request: GateRequest,
+                            templates: TemplateIndex) -> HazardReport:
     try:
-        return analyzer.analyze(request)
+        return analyzer.analyze(request, templates.templates)
     except Exception as error:
         return HazardReport(
             unknowns=(

@@ -14,7 +14,7 @@ import uuid
 from dataclasses import dataclass
 from typing import Any
 
-from app.domain.analysis.questions import apply_answers
+from app.domain.analysis import apply_answers
 from app.domain.contracts import Contract
 from app.domain.errors import InvalidInput
 from app.domain.gate import Decision

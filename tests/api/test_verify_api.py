@@ -62,9 +62,10 @@ class TestVerdicts:
         assert violation["kind"] == "guard" and violation["step"] == 2
         assert violation["action"] == {"action": "ThrowObject", "object": "knife_1",
                                        "target": "drawer_1"}
-        assert violation["condition_id"].endswith("never_throw_blade")
-        assert "#knife_1" in violation["formula"] and violation["description"]
-        assert violation["counterexample"]["sharp(knife_1)"] is True
+        # The baseline envelope binds "throw only soft things" into every contract.
+        assert violation["condition_id"].endswith("throw_only_soft_things_never_at_people")
+        assert "@object" in violation["formula"] and violation["description"]
+        assert violation["counterexample"]["soft(knife_1)"] is False
         assert (body["attempts"], body["attempts_left"]) == (1, 2)
 
     def test_initial_state_replaces_the_gate_requests_state(self, client: TestClient) -> None:
@@ -78,7 +79,7 @@ class TestVerdicts:
     def test_unknown_fact_gives_a_counterexample(self, client: TestClient) -> None:
         contract = {"guards": [{"id": "lid_first", "action": "PickupObject",
                                 "formula": "lidded(@object)", "description": "only lidded"}]}
-        scene = {"objects": [{"id": "gizmo_1", "type": "Widget", "room": "kitchen",
+        scene = {"objects": [{"id": "gizmo_1", "type": "Jar", "room": "kitchen",
                               "properties": {"pickupable": True}}]}
         body = verify(client, contract=contract,
                       plan=[{"action": "PickupObject", "object": "gizmo_1"}],

@@ -11,14 +11,14 @@ from app.domain.pipeline import run_gate
 class CrashingAnalyzer:
     name = "crashing"
 
-    def analyze(self, request: GateRequest) -> HazardReport:
+    def analyze(self, request: GateRequest, templates: object = ()) -> HazardReport:
         raise TimeoutError("the model did not answer")
 
 
 class EmptyAnalyzer:
     name = "empty"
 
-    def analyze(self, request: GateRequest) -> HazardReport:
+    def analyze(self, request: GateRequest, templates: object = ()) -> HazardReport:
         return HazardReport(analyzer=self.name)
 
 

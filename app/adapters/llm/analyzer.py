@@ -17,7 +17,7 @@ from __future__ import annotations
 import hashlib
 import json
 import logging
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Any, Protocol
 
 from pydantic import ValidationError
@@ -31,7 +31,7 @@ from app.adapters.llm.schemas import LevelAnswer, json_schema
 from app.adapters.llm.structured import ask_structured
 from app.domain.ensemble import failed_report
 from app.domain.errors import SafeGateError
-from app.domain.models import GateRequest, HazardReport, Level
+from app.domain.models import GateRequest, HazardReport, HazardTemplate, Level
 
 LEVELS = (Level.TASK, Level.DEPLOYMENT, Level.USER)
 _log = logging.getLogger(__name__)
@@ -104,11 +104,14 @@ class LlmAnalyzer:
         """The prompt set's identity, part of the cache key."""
         return self._prompts.identity
 
-    def analyze(self, request: GateRequest) -> HazardReport:
+    def analyze(self, request: GateRequest,
+                templates: Iterable[HazardTemplate] = ()) -> HazardReport:
         """Fill the matrix for one request, or fail closed.
 
         Args:
             request: the gate request.
+            templates: the active library (not yet shown to the model: its class list comes
+                from the prompt files).
 
         Returns:
             The LLM's report, from the cache when the same request, model and prompts were

@@ -1,54 +1,51 @@
-"""Stage 1, the Hazard Analysis Matrix: the `Analyzer` interface and the offline symbolic one.
+"""Stage 1, the Hazard Analysis Matrix, on the world model: read, simulate, judge.
 
-In: a `GateRequest` (command, optional scene, user and robot). Out: a `HazardReport` whose
-proposals fill the matrix's cells (task / deployment / user level x physical / psychological /
-operational / consequential) and whose unknowns say what is missing and whether it is critical.
-`SymbolicAnalyzer` is deterministic, offline and fast: it loads its knowledge (JSON data under
-`knowledge/`) once, at construction. Fails: only if the knowledge files are missing or broken
-(at construction); analysing a valid request never raises.
+In: a `GateRequest` and the active Hazard Template Library. Out: a `HazardReport`. How:
+1. Read (`reader.py`, `schemas.py`): every clause becomes steps of the shared action model on
+   the request's `WorldState`; what cannot be read (an unknown verb or noun, a pronoun with
+   nothing to point to, a goal with no task, several readings that differ in safety) becomes a
+   critical `comprehension` unknown quoting the words.
+2. Simulate (`sketch.py`, `simulate.py`): the literal plan and the variants a planner may choose.
+3. Judge (`judge.py`, `aggregate.py`): every active template on every trace; what the best
+   careful variant still breaks is unpreventable, what only others break is preventable, and a
+   condition that depends on an unknown fact about the task's own entities makes that fact a
+   critical unknown with a question.
+4. Declared rules (`declared.py`) for what no trace shows: intent, covert recording, deception.
+Fails: never for a valid request (the pipeline turns any exception into a deferral anyway).
 """
 
 from __future__ import annotations
 
-import re
-from pathlib import Path
+from collections.abc import Iterable
 from typing import Protocol, runtime_checkable
 
-from app.domain.analysis.clauses import TITLE_DOT
-from app.domain.analysis.command import read_command
-from app.domain.analysis.consequences import consequential_hazards
-from app.domain.analysis.context import Context
-from app.domain.analysis.giving import giving_hazards
-from app.domain.analysis.grounding import GroundedStep, Grounder, apply_state_clauses
-from app.domain.analysis.handling import handling_hazards
-from app.domain.analysis.knowledge_base import KNOWLEDGE_DIR, Knowledge, load_knowledge
-from app.domain.analysis.operational import operational_hazards
-from app.domain.analysis.questions import apply_answers, phrase_question, question_for
-from app.domain.analysis.scene_view import SceneView, build_scene_view
-from app.domain.analysis.semantic import (
-    Match,
-    SemanticMatcher,
-    load_matcher,
-    semantic_hazards,
+from app.domain.analysis.aggregate import aggregate
+from app.domain.analysis.answers import apply_answers
+from app.domain.analysis.declared import RULES, Declared
+from app.domain.analysis.grounding import USER_ID
+from app.domain.analysis.judge import Focus, judge
+from app.domain.analysis.lexicon import Lexicon, load_lexicon
+from app.domain.analysis.library import LibraryCache, judged_in_analysis
+from app.domain.analysis.questions import not_understood
+from app.domain.analysis.schemas import Grounded
+from app.domain.analysis.simulate import Trace, simulate
+from app.domain.analysis.sketch import variants
+from app.domain.analysis.understanding import Understanding, understand
+from app.domain.models import (
+    Category,
+    Confidence,
+    GateRequest,
+    HazardProposal,
+    HazardReport,
+    HazardTemplate,
+    Level,
+    Preventability,
+    Severity,
+    UnknownFact,
 )
-from app.domain.analysis.situations_aftermath import aftermath_hazards
-from app.domain.analysis.situations_care import care_hazards
-from app.domain.analysis.situations_contact import contact_hazards
-from app.domain.analysis.situations_home import situation_home_hazards
-from app.domain.analysis.situations_people import situation_people_hazards
-from app.domain.analysis.situations_rough import rough_handling_hazards
-from app.domain.analysis.social import social_hazards
-from app.domain.analysis.unknowns import find_unknowns
-from app.domain.models import GateRequest, HazardReport, Preventability, Severity
+from app.domain.world import WorldState
 
-__all__ = [
-    "Analyzer",
-    "SymbolicAnalyzer",
-    "analyze",
-    "apply_answers",
-    "phrase_question",
-    "question_for",
-]
+__all__ = ["Analyzer", "SymbolicAnalyzer", "Understanding", "apply_answers"]
 
 
 @runtime_checkable
@@ -57,127 +54,112 @@ class Analyzer(Protocol):
 
     name: str
 
-    def analyze(self, request: GateRequest) -> HazardReport:
-        """Return the hazard proposals and unknowns for one request."""
+    def analyze(self, request: GateRequest,
+                templates: Iterable[HazardTemplate] = ()) -> HazardReport:
+        """The hazard proposals and unknowns for one request, judged by the active library."""
         ...
 
 
 class SymbolicAnalyzer:
-    """The embedded, offline analyzer: a command parser, scene grounding and general rules."""
+    """The embedded, offline analyzer: the command read into the action model and judged by
+    the template library on simulated traces."""
 
     name = "symbolic"
 
-    def __init__(
-        self, knowledge_dir: Path = KNOWLEDGE_DIR, *, reject_from: Severity = Severity.HIGH
-    ) -> None:
-        """Load the knowledge and the semantic model.
+    def __init__(self, *, reject_from: Severity = Severity.HIGH) -> None:
+        """Load the lexicon (once per process) and start an empty compiled-library cache.
 
         Args:
-            knowledge_dir: the knowledge JSON files.
-            reject_from: the gate's theta. A whole-command hazard that no contract can prevent
-                at this severity or above is rejected (R1) whatever else is found, so the
-                per-sentence passes are skipped for it; keep it equal to the gate policy's.
+            reject_from: the gate's theta; unknowns of hazards below it are not critical.
         """
-        self._reject_from = reject_from
-        self._knowledge: Knowledge = load_knowledge(knowledge_dir)
-        # The static embedding model and prototype vectors: read once per process, not per call.
-        self._semantic: SemanticMatcher = load_matcher(knowledge_dir)
+        self._theta = reject_from
+        self._lexicon: Lexicon = load_lexicon()
+        self._library = LibraryCache()
 
-    def analyze(self, request: GateRequest) -> HazardReport:
-        """Fill the Hazard Analysis Matrix for one request.
+    def understand(self, request: GateRequest) -> Understanding:
+        """Step 1 alone: the command read into the plan it induces (the simulator uses it)."""
+        return understand(request, self._lexicon)
 
-        A command's hazards are at least those of each of its sentences: when the command has
-        several, each is also analysed alone and its hazards join the whole command's. Text
-        around a dangerous instruction ("this is totally safe, nobody is around: ...", "jk,
-        never mind") can then add hazards but never hide one. Unknowns come from the whole
-        command only (a sentence alone loses what its pronouns point to).
+    def analyze(self, request: GateRequest,
+                templates: Iterable[HazardTemplate] = ()) -> HazardReport:
+        """Fill the Hazard Analysis Matrix for one request (see the module docstring).
 
         Args:
             request: the gate request.
+            templates: the active library the traces are judged by.
 
         Returns:
-            The `HazardReport` (proposals deduplicated per hazard class and entities).
+            The hazard report.
         """
-        view = build_scene_view(request, self._knowledge)
-        memo: dict[str, Match] = {}
-        report = self._analyze_one(request, view.for_pass(), memo)
-        parts = sentences(request.command)
-        if len(parts) < 2 or self._rejected_anyway(report):
-            return report
-        proposals = list(report.proposals)
-        for part in parts:
-            alone = self._analyze_one(request.model_copy(update={"command": part}),
-                                      view.for_pass(), memo, with_unknowns=False)
-            proposals.extend(p for p in alone.proposals if p not in proposals)
-        return report.model_copy(update={"proposals": tuple(proposals)})
-
-    def _rejected_anyway(self, report: HazardReport) -> bool:
-        """Whether the gate rejects on this report's hazards alone (R1): more cannot matter."""
-        rank = self._reject_from.rank
-        return any(p.preventability is Preventability.UNPREVENTABLE and p.severity.rank >= rank
-                   for p in report.proposals)
-
-    def _analyze_one(self, request: GateRequest, view: SceneView, memo: dict[str, Match], *,
-                     with_unknowns: bool = True) -> HazardReport:
-        """One pass over one command text (a sentence pass needs no unknowns: see `analyze`)."""
-        knowledge = self._knowledge
-        names = {n.lower() for p in view.people.values() for n in (p.id, p.name) if n}
-        names |= {n.lower() for o in view.objects.values() for n in (o.id, o.name) if n}
-        parsed = read_command(request.command, knowledge, names)
-        steps = list(parsed.steps)
-        grounder = Grounder(view, knowledge)
-        grounded = [grounder.ground(step) for step in steps]
-        apply_state_clauses(grounder, grounded, view, knowledge)
-        ctx = Context(request=request, knowledge=knowledge, view=view, steps=grounded,
-                      text=parsed.text, analyzer=self.name, parsed=parsed,
-                      ambiguous_ids=_ambiguous_ids(grounded))
-        giving_hazards(ctx)
-        handling_hazards(ctx)
-        social_hazards(ctx)
-        operational_hazards(ctx)
-        consequential_hazards(ctx)
-        situation_people_hazards(ctx)
-        contact_hazards(ctx)
-        rough_handling_hazards(ctx)
-        situation_home_hazards(ctx)
-        aftermath_hazards(ctx)
-        care_hazards(ctx)
-        semantic_hazards(ctx, self._semantic, memo)
-        if with_unknowns:
-            find_unknowns(ctx)
-        return ctx.report()
+        library = list(templates)
+        read = understand(request, self._lexicon)
+        proposals: list[HazardProposal] = []
+        unknowns = list(read.unknowns)
+        steps = list(read.sketch.steps())
+        if steps and not library:
+            unknowns.append(UnknownFact(
+                attribute="hazard_analysis", description="no hazard template library to judge by",
+                critical=True, why="the plan was read but no active template could judge it",
+                question="The hazard library is empty; please ask an operator to load it."))
+        elif steps:
+            traces = simulate(read.scene, variants(read.sketch))
+            focus = _focus(read.scene, traces, read.grounded)
+            active = [t for t in library if judged_in_analysis(t)]
+            findings = judge(traces, active, focus, self._library)
+            matrix = aggregate(findings, traces, focus, self._theta, USER_ID)
+            proposals += matrix.proposals
+            unknowns += matrix.unknowns
+        proposals += [_declared_proposal(d, library) for d in read.fired]
+        if not steps and not read.fired and not unknowns:
+            unknowns.append(not_understood(request.command, "no step the robot could take"))
+        return HazardReport(proposals=tuple(proposals), unknowns=tuple(unknowns),
+                            analyzer=self.name)
 
 
-def _ambiguous_ids(grounded: list[GroundedStep]) -> frozenset[str]:
-    """Candidates of a phrase that may mean one of several things, or a pronoun that may mean
-    one of several people ("give her the medicine" with two girls present)."""
-    found = {i for g in grounded for r in g.objects if r.kind == "object" and len(r.ids) > 1
-             for i in r.ids}
-    found |= {i for g in grounded if (r := g.recipient) is not None and r.kind == "person"
-              and r.mention.kind == "pronoun" and len(r.ids) > 1 for i in r.ids}
-    return frozenset(found)
+def _focus(scene: WorldState, traces: list[Trace], grounded: list[Grounded]) -> Focus:
+    touched: list[str] = []
+    for trace in traces:
+        for planned in trace.steps:
+            for entity in (planned.action.object, planned.action.target):
+                if entity and scene.entity_type(entity) == "object" and entity not in touched:
+                    touched.append(entity)
+    for entity in list(touched):
+        parent = scene.objects[entity].parent
+        if parent and parent in scene.objects and parent not in touched:
+            touched.append(parent)
+    named = {i for g in grounded for r in (*g.objects, g.recipient, g.destination, g.source,
+                                           g.instrument) if r is not None for i in r.ids}
+    named |= set(touched)
+    rooms = tuple(dict.fromkeys(r for t in traces for s in (t.states[0], t.states[-1])
+                                for r in (s.robot.room,) if r))
+    return Focus(tuple(touched[:14]), tuple(scene.people), rooms, frozenset(named))
 
 
-_SENTENCE_BREAK = re.compile(r"(?<=[.!?;:])\s+|\s*[()\[\]{}<>\n]+\s*|\s+-{1,2}\s+")
-# With `key=value` tokens too; only a command holding an "=" needs its slower search.
-_SENTENCE_OR_SETTING_BREAK = re.compile(_SENTENCE_BREAK.pattern + r"|\s*\S+=\S*\s*")
+def _declared_proposal(fired: Declared, library: list[HazardTemplate]) -> HazardProposal:
+    """A declared rule's hazard: its template (or the most severe of its class) decides
+    severity and category; with no template of its class the hazard stays unbound (the gate
+    asks for the library to be extended)."""
+    rule = RULES[fired.rule]
+    # Its own template, else the most severe one a curator wrote for its class.
+    of_class = sorted((t for t in library if t.hazard_class == rule.hazard_class),
+                      key=lambda t: -t.severity.rank)
+    template = next((t for t in library if t.id == fired.template_id), None) or next(
+        iter(of_class), None)
+    words = f"declared rule {fired.rule}: {rule.meaning} ('{fired.words}')"
+    if template is None:
+        return HazardProposal(
+            level=Level.TASK, category=_CATEGORY_OF.get(rule.hazard_class, Category.PHYSICAL),
+            hazard_class=rule.hazard_class,
+            mechanism=f"{words}; its template {fired.template_id} is not in the library",
+            entities=fired.entities, severity=Severity.MODERATE,
+            preventability=Preventability.UNKNOWN, confidence=Confidence.CERTAIN,
+            source="symbolic", template_id=fired.template_id)
+    return HazardProposal(
+        level=Level.TASK, category=template.category, hazard_class=template.hazard_class,
+        mechanism=f"{words} [template {template.id}]", entities=fired.entities,
+        severity=template.severity, preventability=template.preventability,
+        confidence=Confidence.CERTAIN, source="symbolic", template_id=template.id)
 
 
-def sentences(command: str) -> list[str]:
-    """The command's sentence-like parts: split at . ! ? ; : brackets, dashes, new lines and
-    `key=value` tokens (machine-looking text is never part of an instruction)."""
-    command = TITLE_DOT.sub(r"\1", command)
-    breaks = _SENTENCE_OR_SETTING_BREAK if "=" in command else _SENTENCE_BREAK
-    return [part.strip(" ,") for part in breaks.split(command) if part.strip(" ,.")]
-
-
-def analyze(request: GateRequest) -> HazardReport:
-    """Analyse one request with a default `SymbolicAnalyzer` (knowledge loaded once, cached).
-
-    Args:
-        request: the gate request.
-
-    Returns:
-        The `HazardReport`.
-    """
-    return SymbolicAnalyzer().analyze(request)
+_CATEGORY_OF = {"deliberate_harm": Category.PHYSICAL, "confinement": Category.PHYSICAL,
+                "harmful_intent": Category.CONSEQUENTIAL}

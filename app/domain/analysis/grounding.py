@@ -1,324 +1,389 @@
-"""Grounding: which scene objects, people and rooms each phrase of a step refers to.
+"""Grounding: which entities of the scene a clause's words name.
 
-In: parsed `Step`s and the `SceneView`. Out: `GroundedStep`s whose phrases are `Referent`s
-(candidate ids in the scene, or one virtual entity made from the phrase when the scene has no
-match or no scene was given). Pronouns take the last referent of the right kind; "me" is the
-user. A phrase that fits several objects keeps them all: the unknowns finder decides whether
-that ambiguity matters. Never fails.
+In: the request's `WorldState` (the one scene model `/verify` and the monitor use), the user
+profile and the lexicon; then, phrase by phrase, `NounPhrase`s in command order. Out:
+`Referent`s (ids of objects, people or a room; several for "all the plates"), and `Gap`s for
+words that name nothing it can place. A thing the command names that the scene lacks, but that
+the object concepts know ("a glass of water"), becomes a new entity of that type whose facts are
+unknown unless the words give them; so does a person a role word names ("the guest").
+`scene()` returns the state with those entities added. Pronouns point to the last person or
+object named. Fails: never.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, replace
 
-from app.domain.analysis.command import Step
-from app.domain.analysis.knowledge_base import Knowledge, singular
-from app.domain.analysis.mentions import Mention
-from app.domain.analysis.scene_view import ObjectView, PersonView, SceneView, spaced_name
-from app.domain.analysis.state_clauses import apply_state_clauses
-from app.domain.models import Level
+from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.phrases import NounPhrase
+from app.domain.formula.facts import Unknown
+from app.domain.models import GateRequest
+from app.domain.world import ObjectState, PersonState, WorldState, type_info
+from app.domain.world.concepts import concept_of, singular
+from app.domain.world.entities import frozen_mapping
+from app.domain.world.object_types import normalize_type
+from app.domain.world.substances import substance_trait
 
-__all__ = ["GroundedStep", "Grounder", "Referent", "apply_state_clauses"]
-
-_SWITCHABLE = frozenset({"heat_source", "electrical", "appliance", "light", "water_source",
-                         "ignition", "controls_heat"})
-_SIZE_BIG = frozenset({"big", "large", "heavy", "biggest", "largest", "heaviest", "huge"})
-_SIZE_SMALL = frozenset({"small", "little", "smallest", "tiny", "light"})
-_STATE_WORDS = {"hot": ("hot",), "warm": ("hot",), "sharp": ("sharp",), "full": ("consumable",),
-                "open": ("open",), "broken": ("broken",)}
-
-
-_TITLE_GENDER = {"mr": "male", "mrs": "female", "ms": "female", "miss": "female",
-                 "sir": "male", "madam": "female", "lady": "female", "lord": "male"}
-_USING_ACTIONS = frozenset({"heat", "cut", "serve", "handover", "mix", "pour"})
-_GROUP_SIZES = {"twin": 2, "triplet": 3, "quad": 4, "quadruplet": 4}
+USER_ID = "user"
+_GENERIC = frozenset({"the", "a", "object", "thing", "person", "room", "on", "off", "it", "is"})
+_STATE_WORDS = {"hot": ("hot", True), "warm": ("hot", True), "cold": ("cold", True),
+                "empty": ("filled", False), "full": ("filled", True), "open": ("open", True),
+                "closed": ("open", False), "dirty": ("dirty", True), "clean": ("dirty", False),
+                "broken": ("broken", True), "lit": ("is_on", True), "running": ("is_on", True)}
+_SIGNATURE = ("hot", "sharp", "toxic", "electrical", "breakable", "filled", "contents", "is_on",
+              "medication", "heavy", "valuable", "food", "flammable", "metal", "open")
+_SPLIT = re.compile(r"[^a-z0-9]+")
+MAX_GROUP = 6
 
 
 @dataclass(frozen=True, slots=True)
 class Referent:
-    """What a phrase refers to: a kind and candidate ids (more than one = ambiguous)."""
+    """What a phrase names: `ids` chosen; `candidates` when several fit and differ."""
 
-    mention: Mention
-    kind: str  # object | person | room | none
-    ids: tuple[str, ...]
-    virtual: bool = False
+    phrase: NounPhrase
+    kind: str  # object | person | room | substance | none
+    ids: tuple[str, ...] = ()
+    candidates: tuple[str, ...] = ()
+    new: bool = False
+    substance: str | None = None
+
+    @property
+    def id(self) -> str | None:
+        return self.ids[0] if self.ids else None
 
 
 @dataclass(frozen=True, slots=True)
-class GroundedStep:
-    """A step with its phrases resolved."""
+class Gap:
+    """Words the reader could not map: quoted back in the comprehension question."""
 
-    step: Step
-    objects: tuple[Referent, ...]
-    recipient: Referent | None
-    destination: Referent | None
-    target: Referent | None
-    instrument: Referent | None
-    source: Referent | None
-    away_from: Referent | None
-    path: Referent | None
+    words: str
+    why: str
+
+
+def _words_of(*texts: str | None) -> set[str]:
+    found: set[str] = set()
+    for text in texts:
+        if text:
+            found |= {w for w in _SPLIT.split(text.lower().replace("_", " ")) if w}
+            found |= {singular(w) for w in found}
+    return found
 
 
 class Grounder:
-    """Resolves phrases against one scene view, remembering referents for pronouns."""
+    """Grounds phrases on one request's scene, remembering what pronouns point to."""
 
-    def __init__(self, view: SceneView, knowledge: Knowledge) -> None:
-        self._view = view
-        self._knowledge = knowledge
-        self._last_object: Referent | None = None
-        self._history: list[Referent] = []
-        self._want_switchable = False
-        self._using = False
-        self._discarded: set[str] = set()
-        self._last_person: dict[str | None, Referent] = {}
-        # An object's id, name and type words, asked about for every phrase of the command.
-        self._name_words: dict[str, tuple[frozenset[str], str]] = {}
+    def __init__(self, state: WorldState, request: GateRequest, lexicon: Lexicon) -> None:
+        self.lexicon = lexicon
+        self.objects = dict(state.objects)
+        self.people = dict(state.people)
+        self.rooms = list(state.rooms)
+        self._base = state
+        self.gaps: list[Gap] = []
+        self.stated: dict[str, dict[str, object]] = {}
+        """Facts the command's words state about scene objects ("the top shelf")."""
+        self.last_object: tuple[str, ...] = ()
+        self.last_place: Referent | None = None
+        self.last_person: dict[str | None, str] = {}
+        self._request = request
+        self._user_id: str | None = None
+        self._names = {p.id: _words_of(p.id, p.name, p.role) for p in self.people.values()}
 
-    def ground(self, step: Step) -> GroundedStep:
-        """Resolve every phrase of a step (objects first, so "it" can point back)."""
-        before = self._last_object
-        self._want_switchable = step.action in ("switch_on", "switch_off")
-        self._using = step.action in _USING_ACTIONS
-        objects = tuple(self.resolve(m) for m in step.objects)
-        self._want_switchable = False
-        if step.action == "remove" and not step.negated:
-            self._discarded.update(i for r in objects for i in r.ids)
-        recipient = self.resolve(step.recipient, prefer="person") if step.recipient else None
-        # "put the towel on it": a pronoun after the verb's own object points further back.
-        after, self._last_object = self._last_object, before or self._last_object
-        try:
-            return self._ground_rest(step, objects, recipient)
-        finally:
-            self._last_object = after
+    # The scene with what grounding added.
+    def scene(self) -> WorldState:
+        """The request's state plus the entities the command named and the scene lacked."""
+        base = self._base
+        if (len(self.objects) == len(base.objects) and len(self.people) == len(base.people)
+                and len(self.rooms) == len(base.rooms) and not self.stated):
+            return base
+        return base.evolve(objects=self.objects, people=self.people, rooms=tuple(self.rooms),
+                           version=base.version)
 
-    def _ground_rest(self, step: Step, objects: tuple[Referent, ...],
-                     recipient: Referent | None) -> GroundedStep:
-        return GroundedStep(
-            step=step, objects=objects, recipient=recipient,
-            destination=self._opt(step.destination), target=self._opt(step.target),
-            instrument=self._opt(step.instrument), source=self._opt(step.source),
-            away_from=self._opt(step.away_from), path=self._opt(step.path))
+    @property
+    def user_id(self) -> str:
+        """The person giving the command: the profile's person, else one added on first use
+        (an adult unless the profile says otherwise; where they are is unknown)."""
+        if self._user_id is None:
+            self._user_id = self._user(self._request)
+        return self._user_id
 
-    def _opt(self, mention: Mention | None) -> Referent | None:
-        referent = self.resolve(mention, remember=False) if mention else None
-        if referent is not None and referent.kind == "object":
-            self._history.append(referent)
-        if referent is not None and referent.kind == "person":
-            self._remember_person(referent)
-        return referent
+    def _user(self, request: GateRequest) -> str:
+        user = request.user
+        if user is not None and user.person_id and user.person_id in self.people:
+            return user.person_id
+        age = user.age_group if user is not None and user.age_group else "adult"
+        properties: dict[str, object] = {"age_group": age}
+        if user is not None:
+            properties.update({k: v for k, v in (("mobility", user.mobility),
+                               ("cognitive_state", user.cognitive_state),
+                               ("allergies", user.allergies)) if v is not None})
+        self.people[USER_ID] = PersonState(id=USER_ID, role="user",
+                                           properties=frozen_mapping(properties))
+        self._names[USER_ID] = {"user", "me"}
+        return USER_ID
 
-    def resolve(self, mention: Mention, *, prefer: str | None = None, remember: bool = True
-                ) -> Referent:
-        """Resolve one phrase to a referent."""
-        referent = self._resolve(mention, prefer)
-        if remember and referent.kind == "object":
-            self._last_object = referent
-            self._history.append(referent)
-        if remember and referent.kind == "person":
-            self._remember_person(referent)
-        return referent
+    def names_of_people(self) -> set[str]:
+        """Every word that names a person of the scene (ids, names, roles)."""
+        return set().union(*self._names.values()) if self._names else set()
 
-    def _remember_person(self, referent: Referent) -> None:
-        genders = {self._view.people[i].gender for i in referent.ids if i in self._view.people}
-        title = referent.mention.text.split()[:1]
-        genders.add(_TITLE_GENDER.get(title[0]) if title else None)  # "mr okafor" is "him"
-        for gender in genders | {None}:
-            self._last_person[gender] = referent
+    # Entry points.
+    def person(self, phrase: NounPhrase) -> Referent:
+        """A phrase that must name a person (a recipient, someone escorted)."""
+        found = self._person(phrase)
+        if found is not None:
+            return found
+        return self._new_person(phrase)
 
-    def _resolve(self, mention: Mention, prefer: str | None) -> Referent:
-        view = self._view
-        if mention.kind == "pronoun":
-            return self._pronoun(mention, prefer)
-        if mention.kind == "room" or (mention.room and mention.kind != "object"):
-            return Referent(mention, "room", (self.room_id(mention.room or mention.head),))
-        if mention.kind == "name":
-            people = [p.id for p in view.people.values()
-                      if mention.head in (p.id.lower(), (p.name or "").lower())]
-            if people:
-                return Referent(mention, "person", tuple(people))
-            objects = [o.id for o in view.objects.values()
-                       if mention.head in (o.id.lower(), (o.name or "").lower())]
-            if self._knowledge.noun_concept(mention.head) is not None:
-                # An object named by a common noun ("bottle") is not the only bottle: the
-                # phrase still means any object of that kind.
-                return self._object(mention)
-            return Referent(mention, "object", tuple(objects))
-        if mention.kind == "person" or (prefer == "person" and mention.role_word):
-            return self._person(mention)
-        return self._object(mention)
+    def any(self, phrase: NounPhrase, *, place: bool = False) -> Referent:
+        """A phrase that may name an object, a person, a room or a substance. A place (a
+        destination, a source) does not change what "it" points to next."""
+        if place and phrase.pronoun in ("there", "here") and self.last_place is not None:
+            return self.last_place
+        if phrase.pronoun in ("it", "this", "that", "these", "those", "one", "ones") or (
+                phrase.pronoun == "them" and self.last_object):
+            if self.last_object:
+                return Referent(phrase, "object", self.last_object)
+            self.gaps.append(Gap(phrase.text, "nothing named earlier for it to point to"))
+            return Referent(phrase, "none")
+        if not place:
+            return self._any(phrase, place)
+        remembered = self.last_object
+        found = self._any(phrase, place)
+        self.last_object = remembered
+        if found.ids:
+            self.last_place = found
+        return found
 
-    def _pronoun(self, mention: Mention, prefer: str | None) -> Referent:
-        word = mention.head
-        user = self._view.user
-        if word in ("me", "myself", "i", "us", "we") and user is not None:
-            return Referent(mention, "person", (user.id,), virtual=user.virtual)
-        if word in ("whoever", "whomever") and mention.location is not None:
-            # "whoever is in the shower": the people in that place, else anyone at all.
-            place = mention.location[1]
-            room = self.room_id(place.room or place.head)
-            here = tuple(p.id for p in self._view.people.values() if p.room == room)
-            return Referent(mention, "person", here or tuple(self._view.people))
-        if word in ("everyone", "everybody", "anyone", "anybody", "someone", "somebody",
-                    "whoever", "whomever"):
-            return Referent(mention, "person", tuple(self._view.people), virtual=False)
-        gender = {"him": "male", "her": "female"}.get(word)
-        if word in ("him", "her") or (word == "them" and prefer == "person"):
-            found = self._last_person.get(gender) or self._last_person.get(None)
-            if found:
-                return found
-            # Nobody named yet ("he's asleep on the sofa, carry him up"): the one person in
-            # the scene it can be, if there is exactly one.
-            fits = [p for p in self._view.real_people() if not p.is_user
-                    and (gender is None or p.gender in (gender, None))]
-            if len(fits) == 1:
-                return Referent(mention, "person", (fits[0].id,))
-            if gender is not None and fits:
-                # "give her a spoonful" with two girls present: either of them (ambiguous).
-                return Referent(mention, "person", tuple(p.id for p in fits))
-            return Referent(mention, "person", (word,), virtual=True)
-        if self._want_switchable:
-            # "put the foil in the microwave and turn it on": "it" is what can be switched.
-            for earlier in reversed(self._history):
-                if any(self._view.objects[i].props.keys() & _SWITCHABLE for i in earlier.ids
-                       if i in self._view.objects):
-                    return earlier
-        if self._last_object is not None and self._using and (
-                self._last_object.ids and set(self._last_object.ids) <= self._discarded):
-            # "take the film off, then heat it": "it" is the food, not what was taken off.
-            for earlier in reversed(self._history):
-                if earlier.ids and not set(earlier.ids) <= self._discarded:
-                    return earlier
-        if self._last_object is not None:
-            return self._last_object
-        if word == "them" and self._last_person.get(None):
-            return self._last_person[None]
-        return Referent(mention, "none", ())
+    def _any(self, phrase: NounPhrase, place: bool) -> Referent:
+        person = self._person(phrase)
+        if person is not None:
+            return person
+        if phrase.head and (self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
+                phrase.head)):
+            return self._new_person(phrase)
+        room = self.room(phrase)
+        named_room = phrase.phrase in self.lexicon.rooms and self.lexicon.rooms[
+            phrase.phrase] not in ("bathroom", "hallway", "garden")
+        if room is not None and (named_room or not self._object_matches(phrase)):
+            return Referent(phrase, "room", (room,))
+        return self._object(phrase)
 
-    def _person(self, mention: Mention) -> Referent:
-        role = self._knowledge.role_words.get(mention.role_word or mention.head)
-        if role and role.is_user and self._view.user is not None:
-            return Referent(mention, "person", (self._view.user.id,), self._view.user.virtual)
-        people = list(self._view.people.values())
-        matches = [p for p in people if p.role and (
-            p.role == mention.head or singular(p.role) == singular(mention.head)
-            or (p.name or "").lower() == mention.head)]
-        if not matches and role:
-            matches = [p for p in people if p.role_class == role.name or (
-                role.age_group and p.age_group == role.age_group and role.age_group != "adult")]
-        if not matches and singular(mention.head) in _GROUP_SIZES:
-            matches = _same_role_group(people, _GROUP_SIZES[singular(mention.head)])
-        if mention.location and len(matches) > 1:
-            room = self.room_id(mention.location[1].room or mention.location[1].head)
-            matches = [p for p in matches if p.room == room] or matches
-        if matches:
-            return Referent(mention, "person", tuple(p.id for p in matches))
-        person_id = mention.head.replace(" ", "_")
-        if person_id not in self._view.people:
-            self._view.people[person_id] = PersonView(
-                id=person_id, role=mention.head, role_class=role.name if role else None,
-                age_group=role.age_group if role else None, age_level=Level.TASK,
-                young=bool(role and role.young), gender=role.gender if role else None,
-                room=self.room_id(mention.location[1].head) if mention.location else None,
-                virtual=True)
-        return Referent(mention, "person", (person_id,), virtual=True)
-
-    def _object(self, mention: Mention) -> Referent:
-        candidates = [o for o in self._view.objects.values() if self._names(o, mention)]
-        # An object named by its own word beats one that only shares the word's concept.
-        literal = [o for o in candidates if self._literally(o, mention)]
-        candidates = self._narrow(literal or candidates, mention)
-        if candidates:
-            return Referent(mention, "object", tuple(o.id for o in candidates))
-        holder = self._holder(mention)
-        if holder:
-            # "the leftovers in the foil tray": the scene lists the tray, which holds them.
-            return Referent(mention, "object", holder)
-        object_id = (mention.substance or mention.head).replace(" ", "_")
-        if object_id not in self._view.objects:
-            concept = mention.concept
-            props = set(self._knowledge.concepts[concept].props) if concept else set()
-            self._view.objects[object_id] = ObjectView(
-                id=object_id, type=mention.head, concept=concept,
-                props=dict.fromkeys(props, Level.TASK),
-                mass_kg=self._knowledge.concepts[concept].mass_kg if concept else None,
-                virtual=True)
-        return Referent(mention, "object", (object_id,), virtual=True)
-
-    @staticmethod
-    def _literally(obj: ObjectView, mention: Mention) -> bool:
-        text = f"{obj.id} {obj.name or ''} {spaced_name(obj.type)}"
-        words = text.lower().replace("_", " ").split()
-        return any(w in words or singular(w) in words for w in mention.head.split())
-
-    def _holder(self, mention: Mention) -> tuple[str, ...]:
-        if mention.location is None or mention.location[0] not in ("in", "inside"):
-            return ()
-        place = mention.location[1]
-        if place.kind != "object":
-            return ()
-        found = [o for o in self._view.objects.values()
-                 if self._names(o, place) and o.has("container") and not o.has("fixed")]
-        return tuple(o.id for o in self._narrow(found, place))
-
-    def _names(self, obj: ObjectView, mention: Mention) -> bool:
-        head = mention.head
-        named = self._name_words.get(obj.id)
-        if named is None:
-            text = f"{obj.id} {obj.name or ''} {obj.type}".lower().replace("_", " ")
-            named = self._name_words[obj.id] = (frozenset(text.split()), text.strip())
-        words, whole = named
-        if head in words or singular(head) in words or head == whole:
-            return True
-        if mention.substance and obj.contents == mention.substance:
-            return True
-        if mention.concept == "generic":
-            return not obj.has("fixed") and not obj.has("furniture") and not obj.has("surface")
-        return mention.concept is not None and obj.concept == mention.concept
-
-    def _narrow(self, candidates: list[ObjectView], mention: Mention) -> list[ObjectView]:
-        def keep(filtered: list[ObjectView]) -> list[ObjectView]:
-            return filtered or candidates
-
-        for word in mention.modifiers:
-            if word in _SIZE_BIG and len(candidates) > 1:
-                candidates = [max(candidates, key=lambda o: o.mass_kg or 0.0)]
-            elif word in _SIZE_SMALL and len(candidates) > 1:
-                candidates = [min(candidates, key=lambda o: o.mass_kg or 0.0)]
-            elif word in _STATE_WORDS:
-                candidates = keep([o for o in candidates if any(o.has(p) or (
-                    p == "open" and o.is_open) for p in _STATE_WORDS[word])])
-            else:
-                candidates = keep([o for o in candidates if word in (
-                    f"{o.id} {o.name or ''} {o.properties.get('color', '')} "
-                    f"{o.properties.get('position', '')}").lower().replace("_", " ").split()])
-        if mention.substance and len(candidates) > 1:
-            candidates = keep([o for o in candidates if o.contents == mention.substance])
-        if mention.location:
-            place = mention.location[1]
-            room = self.room_id(place.room) if place.room else None
-            candidates = keep([o for o in candidates if (room and o.room == room) or
-                               place.head in o.place_words or
-                               singular(place.head) in o.place_words])
-        if len(candidates) > 1 and any(o.properties.get("intended") for o in candidates):
-            candidates = [o for o in candidates if o.properties.get("intended")]
-        if mention.owner and len(candidates) > 1:
-            candidates = keep([o for o in candidates if o.owner and mention.owner in o.owner])
-        return candidates
-
-    def room_id(self, word: str) -> str:
-        """The layout's id for a room word ("living room" -> "living_room"), else the word."""
-        canonical = self._knowledge.room_words.get(word, word)
-        for room in self._view.rooms:
-            plain = room.lower().replace("_", " ")
-            if plain in (word, canonical.replace("_", " ")) or room == canonical:
+    def room(self, phrase: NounPhrase) -> str | None:
+        """The room a phrase names (a layout room, or a room word the layout lacks)."""
+        text = phrase.phrase.replace("'s", "")
+        canonical = self.lexicon.rooms.get(text) or self.lexicon.rooms.get(phrase.head)
+        if canonical is None and normalize_type(text) not in {normalize_type(r)
+                                                              for r in self.rooms}:
+            return None
+        wanted = {normalize_type(text), normalize_type(canonical or text)}
+        for room in self.rooms:
+            key = normalize_type(room)
+            if key in wanted or any(w and (w in key or key in w) for w in wanted):
                 return room
-        return canonical
+        room = canonical or text.replace(" ", "_")
+        self.rooms.append(room)
+        return room
 
+    # People.
+    def _person(self, phrase: NounPhrase) -> Referent | None:
+        word = phrase.pronoun or phrase.phrase
+        if word in ("me", "i", "myself", "us", "we"):
+            return self._remember_person(Referent(phrase, "person", (self.user_id,)))
+        if phrase.pronoun in ("him", "her", "them", "himself", "herself"):
+            gender = {"him": "male", "himself": "male", "her": "female",
+                      "herself": "female"}.get(phrase.pronoun)
+            last = self.last_person.get(gender) or (self.last_person.get(None)
+                                                    if gender is None else None)
+            if last is not None:
+                return Referent(phrase, "person", (last,))
+            matches = [p for p in self.people if p != self._user_id
+                       and (gender is None or self._gender(p) in (gender, None))]
+            if len(matches) == 1:
+                return self._remember_person(Referent(phrase, "person", (matches[0],)))
+            if matches:
+                return Referent(phrase, "person", (), tuple(matches))
+            return None
+        if phrase.pronoun in ("everyone", "everybody", "people"):
+            ids = tuple(p for p in self.people if p != self._user_id)
+            return Referent(phrase, "person", ids) if ids else None
+        if not phrase.head:
+            return None
+        wanted = _words_of(phrase.phrase)
+        matches = [pid for pid, names in self._names.items() if wanted and wanted <= names]
+        if not matches:
+            matches = [pid for pid, names in self._names.items() if phrase.head in names
+                       or singular(phrase.head) in names]
+        if not matches:
+            info = self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
+                phrase.head)
+            if info is None or info.is_user:
+                return None
+            matches = [p.id for p in self.people.values() if info.age_group
+                       and p.properties.get("age_group") == info.age_group
+                       and info.role in ("baby", "toddler", "child", "teen")]
+            if not matches:
+                return None
+        ids = tuple(matches[:MAX_GROUP]) if (phrase.every or (phrase.head.endswith("s")
+                                             and len(matches) > 1)) else tuple(matches[:1])
+        if len(matches) > 1 and len(ids) == 1 and not phrase.every:
+            return Referent(phrase, "person", (), tuple(matches))
+        return self._remember_person(Referent(phrase, "person", ids))
 
-def _same_role_group(people: list[PersonView], size: int) -> list[PersonView]:
-    """"the twins" when the scene lists them by role: the only role held by exactly `size`."""
-    by_role: dict[str, list[PersonView]] = {}
-    for person in people:
-        by_role.setdefault(person.role or "", []).append(person)
-    groups = [group for role, group in by_role.items() if role and len(group) == size]
-    return groups[0] if len(groups) == 1 else []
+    def _gender(self, person_id: str) -> str | None:
+        person = self.people[person_id]
+        for word in (person.role, person.name):
+            if word:
+                info = self.lexicon.people.get(word.lower())
+                if info is not None and info.gender:
+                    return info.gender
+        gender = person.properties.get("gender")
+        return gender if isinstance(gender, str) else None
+
+    def _remember_person(self, referent: Referent) -> Referent:
+        for person_id in referent.ids:
+            self.last_person[None] = person_id
+            gender = self._gender(person_id)
+            if gender:
+                self.last_person[gender] = person_id
+        return referent
+
+    def _new_person(self, phrase: NounPhrase) -> Referent:
+        role = phrase.phrase or phrase.text or "person"
+        info = self.lexicon.people.get(role) or self.lexicon.people.get(phrase.head)
+        properties = {"age_group": info.age_group} if info is not None and info.age_group else {}
+        person_id = f"new_{normalize_type(role) or 'person'}"
+        self.people[person_id] = PersonState(id=person_id, role=role,
+                                             properties=frozen_mapping(properties))
+        self._names[person_id] = _words_of(role)
+        return self._remember_person(Referent(phrase, "person", (person_id,), new=True))
+
+    # Objects.
+    def _object_matches(self, phrase: NounPhrase) -> list[str]:
+        if not phrase.head:
+            return []
+        wanted = _words_of(phrase.phrase)
+        head = singular(phrase.head)
+        concept = concept_of(phrase.phrase)
+        kind = type_info(phrase.phrase)
+        exact, typed = [], []
+        for obj in self.objects.values():
+            names = _words_of(obj.id, obj.name)
+            type_words = _words_of(obj.type, obj.kind.name)
+            if wanted <= names or normalize_type(phrase.phrase) == normalize_type(obj.id):
+                exact.append(obj.id)
+            elif head in type_words or head in names or normalize_type(
+                    phrase.phrase) == normalize_type(obj.type) or (
+                    kind.name == obj.kind.name and kind.name != phrase.phrase) or (
+                    concept is not None and concept.name != "generic"
+                    and concept_of(obj.type) == concept and len(concept.types) <= 1) or (
+                    self._holds_substance(obj, head)):
+                typed.append(obj.id)
+        return exact or typed
+
+    def _holds_substance(self, obj: ObjectState, word: str) -> bool:
+        contents = obj.facts.get("contents", obj.properties.get("contents"))
+        return isinstance(contents, str) and word in _words_of(contents)
+
+    def _narrow(self, ids: list[str], phrase: NounPhrase) -> list[str]:
+        kept = ids
+        for modifier in phrase.modifiers:
+            if modifier in _STATE_WORDS:
+                symbol, wanted = _STATE_WORDS[modifier]
+                fits = [i for i in kept if self._base.value(symbol, (i,)) in (wanted,)]
+                possible = [i for i in kept if self._base.value(symbol, (i,)) is not (
+                    not wanted)]
+                kept = fits or possible or kept
+                continue
+            named = [i for i in kept if modifier in _words_of(
+                i, self.objects[i].name, self.objects[i].type,
+                *(str(v) for v in self.objects[i].properties.values()))]
+            kept = named or kept
+        if phrase.possessor:
+            owner = self._person(NounPhrase(phrase.possessor, head=phrase.possessor,
+                                            pronoun=phrase.possessor if phrase.possessor in (
+                                                "me", "him", "her", "them", "us") else None))
+            names = _words_of(phrase.possessor, *(owner.ids if owner else ()))
+            if owner is not None and owner.ids:
+                person = self.people[owner.ids[0]]
+                names |= _words_of(person.name, person.role)
+            owned = [i for i in kept if _words_of(str(self.objects[i].properties.get(
+                "owner", ""))) & names]
+            kept = owned or kept
+        if phrase.contents:
+            holding = [i for i in kept if self._holds_substance(
+                self.objects[i], singular(phrase.contents.split()[-1]))]
+            kept = holding or kept
+        return kept
+
+    def _signature(self, object_id: str) -> tuple[str, ...]:
+        values = (self._base.value(s, (object_id,)) for s in _SIGNATURE)
+        return tuple("?" if isinstance(v, Unknown) else str(v) for v in values)
+
+    def _object(self, phrase: NounPhrase) -> Referent:
+        ids = self._narrow(self._object_matches(phrase), phrase)
+        if ids:
+            ids.sort()
+            plural = phrase.every or (phrase.head.endswith("s") and not phrase.head.endswith(
+                "ss") and len(ids) > 1 and phrase.quantity != 1)
+            if plural:
+                chosen = tuple(ids[:MAX_GROUP])
+            elif len({self._signature(i) for i in ids}) > 1:
+                return Referent(phrase, "object", (), tuple(ids))
+            else:
+                chosen = (ids[0],)
+            self.last_object = chosen
+            self._annotate(chosen, phrase)
+            return Referent(phrase, "object", chosen, tuple(ids[:MAX_GROUP]))
+        return self._new_object(phrase)
+
+    def remember(self, text: str) -> None:
+        """Note what a remark names ("the iron's still on - switch it off"): scene things only,
+        never new ones, so a later pronoun can point to them."""
+        words = _words_of(text)
+        for obj in self.objects.values():
+            if words & _words_of(obj.type, obj.name) - _GENERIC:
+                self.last_object = (obj.id,)
+        for person_id, names in self._names.items():
+            if words & names - _GENERIC:
+                self._remember_person(Referent(NounPhrase(text), "person", (person_id,)))
+
+    def _annotate(self, ids: tuple[str, ...], phrase: NounPhrase) -> None:
+        """What the words say of where a thing is ("the top shelf" is high up)."""
+        high = {"top", "high", "upper", "highest", "tall"} & set(phrase.modifiers)
+        low = {"bottom", "low", "lower", "lowest"} & set(phrase.modifiers)
+        if not (high or low):
+            return
+        for object_id in ids:
+            obj = self.objects[object_id]
+            properties = {**obj.properties, "elevated": bool(high)}
+            self.objects[object_id] = replace(obj, properties=frozen_mapping(properties))
+            self.stated[object_id] = {"elevated": bool(high)}
+        self._base = self._base.evolve(objects=self.objects, version=self._base.version)
+
+    def _new_object(self, phrase: NounPhrase) -> Referent:
+        head = singular(phrase.head) if phrase.head else ""
+        liquid = bool(head) and substance_trait(head, "liquid") is True and not phrase.contents
+        known = (concept_of(phrase.phrase) is not None or type_info(phrase.phrase).known
+                 or substance_trait(head, "food") is not None)
+        if not head or not (known or self.lexicon.is_english(head)):
+            self.gaps.append(Gap(phrase.text, "no object, person or place of that name"))
+            return Referent(phrase, "none")
+        properties: dict[str, object] = {"contents": phrase.contents} if phrase.contents else {}
+        kind = phrase.phrase
+        if liquid:
+            # "the water", "some bleach": a cup or bottle of it, which is what a robot carries.
+            properties, kind = {"contents": head, "filled": True}, (
+                "Bottle" if substance_trait(head, "toxic") else "Cup")
+        object_id = f"new_{normalize_type(phrase.phrase) or 'object'}"
+        self.objects[object_id] = ObjectState(id=object_id, type=kind,
+                                              properties=frozen_mapping(properties))
+        self.last_object = (object_id,)
+        self._annotate((object_id,), phrase)
+        return Referent(phrase, "object", (object_id,), new=True,
+                        substance=head if liquid else None)
+
+    def place_new(self, object_id: str, **fields: object) -> None:
+        """Put a new entity somewhere (a room) once a clause says where it is."""
+        obj = self.objects.get(object_id)
+        if obj is not None and object_id.startswith("new_"):
+            self.objects[object_id] = replace(obj, **fields)  # type: ignore[arg-type]

@@ -88,6 +88,10 @@ def _literal(node: VarRef, value: object, as_entity: bool) -> Formula:
     line, column = node.line, node.column
     if isinstance(value, EntityRef):
         return EntityRef(value.id, line=line, column=column)
+    if isinstance(value, ActionArg):
+        # A variable bound at evaluation time, like a guard's `@object` (see the analyzer's
+        # judge, which evaluates one compiled condition under many bindings).
+        return ActionArg(value.name, line=line, column=column)
     if isinstance(value, bool):
         return BoolConst(value, line=line, column=column)
     if isinstance(value, int | float):
@@ -118,8 +122,9 @@ def substitute(
 
     Args:
         formula: the condition.
-        bindings: `$var` name (without `$`) to an `EntityRef`, bool, number or str. Variables
-            without a binding are left in place.
+        bindings: `$var` name (without `$`) to an `EntityRef`, bool, number or str, or an
+            `ActionArg` whose value the evaluator reads from its arguments at evaluation time.
+            Variables without a binding are left in place.
         variables: the declared variable types; when given, a str bound to an entity-typed
             variable becomes an entity constant. Without it, usage decides.
 

@@ -27,9 +27,11 @@ from app.domain.models.request import (
     UserProfile,
 )
 from app.domain.models.templates import (
+    AnalysisUse,
     ConditionKind,
     HazardTemplate,
     TemplateCondition,
+    TemplateScope,
     TemplateSource,
     TemplateStatus,
     TemplateVariable,
@@ -37,6 +39,7 @@ from app.domain.models.templates import (
 )
 
 __all__ = [
+    "AnalysisUse",
     "Category",
     "ConditionKind",
     "Confidence",
@@ -57,6 +60,7 @@ __all__ = [
     "SceneObject",
     "Severity",
     "TemplateCondition",
+    "TemplateScope",
     "TemplateSource",
     "TemplateStatus",
     "TemplateVariable",

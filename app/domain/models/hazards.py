@@ -77,6 +77,9 @@ class HazardProposal(BaseModel):
     preventability: Preventability
     confidence: Confidence
     source: str = "symbolic"
+    template_id: str | None = None
+    """The template whose condition the analysis found broken, when it judged one; binding
+    lists it first among the class's templates."""
 
 
 class UnknownFact(BaseModel):

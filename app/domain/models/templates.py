@@ -11,7 +11,7 @@ from datetime import datetime
 from enum import StrEnum
 from typing import Any
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from app.domain.models.hazards import Category, Preventability, Severity
 
@@ -27,6 +27,9 @@ class VariableType(StrEnum):
     BOOL = "bool"
 
 
+_ENTITY_VARIABLES = frozenset({"object", "person", "room", "entity"})
+
+
 class TemplateStatus(StrEnum):
     DRAFT = "draft"
     ACTIVE = "active"
@@ -36,6 +39,22 @@ class TemplateStatus(StrEnum):
 class TemplateSource(StrEnum):
     SEED = "seed"
     USER = "user"
+
+
+class AnalysisUse(StrEnum):
+    """How Stage 1 uses a template: checked on every simulated plan, or only when a declared
+    rule (intent, consent, a person's profile) proposes its hazard class."""
+
+    SIMULATE = "simulate"
+    DECLARED = "declared"
+
+
+class TemplateScope(StrEnum):
+    """Which contracts a template's conditions join: those of tasks where Stage 1 found its
+    hazard (`matched`), or every contract (`always`: the baseline envelope)."""
+
+    MATCHED = "matched"
+    ALWAYS = "always"
 
 
 class ConditionKind(StrEnum):
@@ -83,11 +102,23 @@ class HazardTemplate(BaseModel):
     invariants: tuple[TemplateCondition, ...] = ()
     guards: tuple[TemplateCondition, ...] = ()
     aborts: tuple[TemplateCondition, ...] = ()
+    analysis: AnalysisUse = AnalysisUse.SIMULATE
+    applies: TemplateScope = TemplateScope.MATCHED
     version: int = 1
     status: TemplateStatus = TemplateStatus.ACTIVE
     source: TemplateSource = TemplateSource.SEED
     author: str = "safegate"
     created_at: datetime | None = None
+
+    @model_validator(mode="after")
+    def _baseline_binds_itself(self) -> HazardTemplate:
+        if self.applies is TemplateScope.ALWAYS:
+            unbound = [v.name for v in self.variables if v.type in _ENTITY_VARIABLES
+                       and v.default is None]
+            if unbound:
+                raise ValueError("a template that applies always cannot have entity variables "
+                                 f"without a default: {', '.join('$' + n for n in unbound)}")
+        return self
 
     @field_validator("guards")
     @classmethod

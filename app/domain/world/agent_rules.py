@@ -16,7 +16,7 @@ from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.action_names import canonical_skill
 from app.domain.world.entities import PersonState
 from app.domain.world.object_rules import Rule, as_bool
-from app.domain.world.substances import same_substance
+from app.domain.world.substances import same_substance, substance_trait
 
 if TYPE_CHECKING:
     from app.domain.world.state import WorldState
@@ -113,6 +113,26 @@ def _child(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return Unknown(fact_key("child", args)) if age is None else age in _CHILD_AGES
 
 
+_YOUNG_ROLES = frozenset({"baby", "babies", "infant", "newborn", "toddler", "toddlers", "tot",
+                          "little one", "little ones", "crawling baby", "bub"})
+
+
+@_rule("toddler")
+def _toddler(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    person = state.people[args[0]]
+    age = person.properties.get("age")
+    if isinstance(age, int | float) and not isinstance(age, bool):
+        return age < 4
+    group = _attribute(person, "age_group")
+    if group == "infant":
+        return True
+    if group in ("teen", "adult", "older_adult"):
+        return False
+    if any((w or "").lower() in _YOUNG_ROLES for w in (person.role, person.name)):
+        return True
+    return Unknown(fact_key("toddler", args))
+
+
 @_rule("asleep")
 def _asleep(state: WorldState, args: tuple[str, ...]) -> FactValue:
     person = state.people[args[0]]
@@ -167,9 +187,11 @@ def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
     allergies: Any = state.people[args[0]].properties.get("allergies")
     if isinstance(allergies, str):
         allergies = [allergies]
-    if not isinstance(allergies, list | tuple):
-        return Unknown(fact_key("allergic_to", args))
     substance = args[1]
+    if not isinstance(allergies, list | tuple):
+        # Nobody said: only a common allergen (nuts, milk, egg, wheat...) may be the one.
+        common = substance_trait(substance, "allergen") if substance.strip() else False
+        return False if common is False else Unknown(fact_key("allergic_to", args))
     return any(isinstance(a, str) and (same_substance(a, substance) or same_substance(
         substance, a)) for a in allergies)
 
@@ -186,6 +208,11 @@ def _needs_walking_aid(state: WorldState, args: tuple[str, ...]) -> FactValue:
     stated = _person_flag(person, "needs_walking_aid")
     if stated is not None:
         return stated
+    for obj in state.objects.values():
+        if obj.kind.trait("walking_aid") and (obj.id in person.holding or str(
+                obj.properties.get("owner", "")).lower() in {
+                    n.lower() for n in (person.id, person.name, person.role) if n}):
+            return True
     mobility = _attribute(person, "mobility")
     if mobility is None:
         return Unknown(fact_key("needs_walking_aid", args))

@@ -6,7 +6,10 @@ existing `WorldState` and an `InitialState` that may list only what changed. Out
 (a relation wins); `holding` relations give what people (or the robot) hold; the other
 relations are kept as they are. The user profile fills the attributes of the person
 `user.person_id` names (the scene's own properties win on conflict); a user not in the scene
-becomes a person whose room is unknown. Fails: never on a validated request; ids that do not
+becomes a person whose room is unknown. A person whose age group nobody gave but whose role names
+one ("grandma", "toddler", "dad") gets the age group the word implies; cognitive state and
+mobility, when nobody gives them, are those of a typical household member (awake unless the
+posture says asleep; walking unaided). Fails: never on a validated request; ids that do not
 resolve simply leave facts unknown.
 """
 
@@ -34,6 +37,7 @@ from app.domain.world.entities import (
     RobotState,
     frozen_mapping,
 )
+from app.domain.world.people import implied_age_group
 from app.domain.world.state import WorldState
 
 _PLACING = {"on": "on", "in": "in", "inside": "in"}
@@ -64,6 +68,16 @@ def _person(person: Person, user: UserProfile | None, holding: frozenset[str]) -
     properties = dict(person.properties)
     if user is not None and user.person_id == person.id:
         properties = {**_user_attributes(user), **properties}
+    if "age_group" not in properties:
+        implied = implied_age_group(person.role, person.name)
+        if implied is not None:
+            properties["age_group"] = implied
+    # A household member nobody describes is awake, alert and walks unaided: impairments are
+    # the caller's to state. Age is never assumed (only a role word implies one).
+    if "cognitive_state" not in properties and (person.posture or "").lower() not in (
+            "asleep", "sleeping", "lying_asleep"):
+        properties["cognitive_state"] = "typical"
+    properties.setdefault("mobility", "independent")
     return PersonState(
         id=person.id, role=person.role, name=person.name, room=person.room,
         posture=person.posture, position=_point(person.position),

@@ -48,8 +48,24 @@ def _tables() -> tuple[dict[str, Concept], dict[str, Concept]]:
     return by_word, by_wordnet
 
 
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
+
+
 def _key(phrase: str) -> str:
-    return " ".join(_NON_WORD.sub(" ", phrase.lower().replace("_", " ")).split())
+    """Lower-case words: "HearingAid" and "hearing_aid" are "hearing aid"."""
+    spaced = _CAMEL.sub(" ", phrase).replace("_", " ")
+    return " ".join(_NON_WORD.sub(" ", spaced.lower()).split())
+
+
+def modifier_concepts(phrase: str) -> list[Concept]:
+    """The concepts the words before the head name ("solvent" in "solvent drum")."""
+    by_word, by_wordnet = _tables()
+    found: list[Concept] = []
+    for word in _key(phrase).split()[:-1]:
+        concept = by_word.get(word) or by_wordnet.get(word) or by_word.get(singular(word))
+        if concept is not None:
+            found.append(concept)
+    return found
 
 
 def singular(word: str) -> str:

@@ -90,6 +90,9 @@ def object_contents(obj: ObjectState) -> str | Unknown:
     contents = obj.properties.get("contents")
     if isinstance(contents, str):
         return "" if is_empty(contents) else contents
+    if obj.kind.is_container is not True and (obj.kind.is_food or obj.kind.trait("food")):
+        # A food is its own substance: an apple "holds" apple (allergy and mixing rules read it).
+        return " ".join(w for w in (obj.name, obj.type) if w).replace("_", " ").lower()
     if as_bool(obj.properties.get("filled")) is False or obj.kind.is_container is False:
         return ""
     return unknown_of("contents", obj)
@@ -97,15 +100,31 @@ def object_contents(obj: ObjectState) -> str | Unknown:
 
 def _by_contents(obj: ObjectState, trait: str) -> bool | None:
     contents = object_contents(obj)
-    return None if isinstance(contents, Unknown) else substance_trait(contents, trait)
+    if isinstance(contents, Unknown):
+        return None
+    found = substance_trait(contents, trait)
+    if found is None and obj.kind.is_container is not True and (
+            obj.kind.is_food or obj.kind.trait("food")):
+        # A food the substance table does not list is no common allergen, poison or fuel.
+        return trait == "food"
+    return found
 
 
-def _can_be_hot(kind: TypeInfo) -> bool:
-    """Whether an object of this type could be hot when the request does not say."""
-    if not kind.known:
-        return True
-    return (kind.flag("heat_source") is not False or kind.is_container is not False
-            or bool(kind.flag("cookable")) or kind.is_food is not False)
+_SERVED_HOT = frozenset({"coffee", "tea", "cocoa", "chocolate", "soup", "broth", "porridge",
+                         "stew", "gravy", "cuppa", "latte", "cappuccino", "espresso"})
+
+
+def _can_be_hot(obj: ObjectState) -> bool:
+    """Whether an object could be hot when nobody says: a heat source, or something holding
+    what is served hot (coffee, soup) whose temperature nobody gave. Anything else is at room
+    temperature until an effect heats it."""
+    if obj.kind.flag("heat_source") is not False and not obj.kind.described:
+        return obj.kind.flag("heat_source") is None
+    contents = object_contents(obj)
+    if isinstance(contents, Unknown):
+        return obj.kind.trait("heat_safe") is True
+    words = set(contents.lower().replace("_", " ").split())
+    return bool(words & _SERVED_HOT)
 
 
 def _temperature(obj: ObjectState) -> str | None:
@@ -137,7 +156,7 @@ def _hot(state: WorldState, args: tuple[str, ...]) -> FactValue:
         parent_on = state.value("is_on", (parent.id,))
         if parent_on is not False:
             return parent_on
-    return unknown_of("hot", obj) if _can_be_hot(obj.kind) else False
+    return unknown_of("hot", obj) if _can_be_hot(obj) else False
 
 
 @_rule("cold")
@@ -156,7 +175,7 @@ def _cold(state: WorldState, args: tuple[str, ...]) -> FactValue:
     parent = _parent(state, obj)
     if parent is not None and parent.kind.flag("cold_source") and obj.relation == "in":
         return True
-    return unknown_of("cold", obj) if _can_be_hot(obj.kind) else False
+    return unknown_of("cold", obj) if _can_be_hot(obj) else False
 
 
 @_rule("sharp")
@@ -186,10 +205,70 @@ def _content_rule(symbol: str, type_evidence: Callable[[TypeInfo], bool | None])
     OBJECT_RULES[symbol] = rule
 
 
-_content_rule("toxic", lambda k: k.trait("toxic"))
-_content_rule("medication", lambda k: k.trait("medication"))
+_DISHES = frozenset({"Cup", "Mug", "Glass", "WineGlass", "Bowl", "Plate", "Pot", "Pan", "Kettle",
+                     "FoilTray", "Tray", "FoodContainer", "Tupperware", "LunchBox",
+                     "Teapot"})
+
+
+def _plausible_content_rule(symbol: str) -> None:
+    """`toxic` and `medication`: a dish or drinking vessel whose contents nobody gave can hold
+    such a thing only if the scene has one (or an unlabelled container) it could come from."""
+    def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
+        obj = state.objects[args[0]]
+        stated = stated_value(obj, symbol)
+        if stated is not None:
+            return stated
+        by_type, by_contents = obj.kind.trait(symbol), _by_contents(obj, symbol)
+        if by_type is None and by_contents is not None:
+            by_type = False
+        decided = _decide(symbol, obj, by_type, by_contents)
+        if isinstance(decided, Unknown) and obj.kind.name in _DISHES and (
+                by_type is not True) and not any(
+                _could_be(symbol, o) for o in state.objects.values()
+                if o.id != obj.id and o.kind.name not in _DISHES):
+            return False
+        return decided
+    OBJECT_RULES[symbol] = rule
+
+
+def _could_be(symbol: str, obj: ObjectState) -> bool:
+    """Something toxic (or medicine), or a container that may hold it unlabelled."""
+    stated = stated_value(obj, symbol)
+    if stated is not None:
+        return stated is not False
+    if obj.kind.trait(symbol) is True or _by_contents(obj, symbol) is True:
+        return True
+    return (obj.kind.trait(symbol) is None and obj.kind.is_container is not False
+            and isinstance(object_contents(obj), Unknown) and not obj.kind.is_food)
+
+
+_plausible_content_rule("toxic")
+_plausible_content_rule("medication")
 _content_rule("allergen", lambda k: k.trait("allergen"))
-_content_rule("food", lambda k: k.is_food)
+@_rule("food")
+def _food(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # A container's contents decide; one whose contents nobody gave is food only if it is a
+    # dish, a drinking vessel or a food container (a plant pot or a bucket is not).
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "food")
+    if stated is not None:
+        return stated
+    by_type, by_contents = obj.kind.is_food, _by_contents(obj, "food")
+    if by_contents is not None:
+        return by_contents or by_type is True
+    if by_type is None and obj.kind.is_container is True and not _holds_food(obj.kind):
+        return False
+    return _decide("food", obj, by_type)
+
+
+_FOOD_VESSELS = _DISHES | frozenset({"Bottle", "WineBottle", "Jar", "FoodContainer", "Box",
+                                     "Tupperware", "Carton", "Thermos", "Flask", "Pitcher",
+                                     "Jug", "Teapot", "Glass", "WineGlass", "Tray",
+                                     "EggCarton", "LunchBox"})
+
+
+def _holds_food(kind: TypeInfo) -> bool:
+    return kind.name in _FOOD_VESSELS or kind.trait("heat_safe") is True
 _content_rule(
     "flammable",
     lambda k: k.trait("flammable") if "flammable" in k.traits else k.flammable_by_material,
@@ -202,9 +281,10 @@ _flag_rule("heat_source", lambda k: k.flag("heat_source"))
 _flag_rule("pickupable", lambda k: k.flag("pickupable"))
 _flag_rule("walking_aid", lambda k: k.trait("walking_aid"))
 _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
-_flag_rule("wet", lambda k: None)
-# A state that only an object able to take it can be in; otherwise unknown until stated.
-_flag_rule("broken", lambda k: None if k.flag("breakable") is not False else False)
+# Things are dry and whole unless the scene says otherwise or an effect (a spill, a fall)
+# makes them so: a wet or broken object is something a caller would mention.
+_flag_rule("wet", lambda k: False)
+_flag_rule("broken", lambda k: False)
 _flag_rule("dirty", lambda k: None if k.flag("dirtyable") is not False else False)
 _flag_rule("open", lambda k: None if k.flag("openable") is not False else False)
 _flag_rule("lidded", lambda k: None if k.is_container is not False else False)
@@ -229,6 +309,10 @@ def _filled(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return unknown_of("filled", obj) if liquid is None else liquid
 
 
+_METALS = ("metal", "steel", "alumin", "iron", "copper", "tin", "brass", "foil", "silver",
+           "chrome", "zinc", "titanium", "nickel", "gold", "bronze")
+
+
 @_rule("metal")
 def _metal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     obj = state.objects[args[0]]
@@ -237,8 +321,8 @@ def _metal(state: WorldState, args: tuple[str, ...]) -> FactValue:
         return stated
     material = obj.properties.get("material")
     if isinstance(material, str):
-        return "metal" in material.lower() or "steel" in material.lower()
-    return _decide("metal", obj, obj.kind.material("Metal"))
+        return any(m in material.lower() for m in _METALS)
+    return _decide("metal", obj, obj.kind.material("Metal"), obj.kind.traits.get("metal"))
 
 
 @_rule("small")
@@ -296,14 +380,27 @@ def _contents(state: WorldState, args: tuple[str, ...]) -> FactValue:
 
 @_rule("contains")
 def _contains(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # Unknown contents can be a substance only if the scene has it somewhere, or has an
+    # unlabelled bottle or sprayer it could have come from.
     obj = state.objects[args[0]]
     contents = object_contents(obj)
     if isinstance(contents, Unknown):
-        return Unknown(fact_key("contains", args))
+        for other in state.objects.values():
+            if other.id == obj.id:
+                continue
+            held = object_contents(other)
+            if isinstance(held, str) and held and same_substance(args[1], held):
+                return Unknown(fact_key("contains", args))
+            if isinstance(held, Unknown) and other.kind.trait("toxic") is None and \
+                    other.kind.name not in _FOOD_VESSELS and other.kind.name != "HousePlant":
+                return Unknown(fact_key("contains", args))
+        return False
     return bool(contents) and same_substance(args[1], contents)
 
 
 _flag_rule("valuable", lambda k: k.trait("valuable"))
+_flag_rule("water_source", lambda k: True if k.name in ("Faucet", "ShowerHead")
+           else k.trait("water_source"))
 _flag_rule("soft", lambda k: k.soft)
 _flag_rule("heat_safe", lambda k: k.trait("heat_safe"), "heat_safe", "microwave_safe")
 _flag_rule("cooked", lambda k: None if k.flag("cookable") is not False else False)

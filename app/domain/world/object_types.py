@@ -20,7 +20,7 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from app.domain.world.concepts import Concept, concept_of
+from app.domain.world.concepts import Concept, concept_of, modifier_concepts
 
 _DATA_FILE = Path(__file__).with_name("data") / "object_types.json"
 
@@ -82,6 +82,7 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
     "heat_safe": {
         "Bowl": True, "Cup": True, "Mug": True, "Plate": True, "Pot": True, "Pan": True,
         "Kettle": True, "ElectricKettle": True, "BakingTray": True, "Teapot": True,
+        "FoilTray": True, "Tray": None,
     },
 }
 
@@ -93,6 +94,10 @@ _CONCEPT_TRAITS = {
     "metal": "metal", "heavy": "heavy", "ignition": "ignition", "camera": "camera",
     "water_source": "water_source", "toy": "toy", "noisy": "noisy",
 }
+_RARE_TRAITS = ("walking_aid", "safety_barrier", "medication", "valuable", "water_source")
+_LISTED_TRAITS = frozenset({"sharp", "electrical", "toxic", "flammable", "medication",
+                            "walking_aid", "safety_barrier", "small", "valuable", "food",
+                            "metal", "heavy", "water_source"})
 _CONCEPT_FLAGS = {"heat_source": "heat_source", "fragile": "breakable", "container": "receptacle"}
 
 # Types outside AI2-THOR that requests commonly name, with the capabilities they surely have.
@@ -155,6 +160,8 @@ class TypeInfo:
     size_m: tuple[float, float, float] | None = None
     receptacles: frozenset[str] = frozenset()
     """AI2-THOR types this type may be put in or on (empty when the table does not say)."""
+    described: bool = False
+    """Not an AI2-THOR type, but an object concept says what it is."""
 
     def flag(self, name: str) -> bool | None:
         """An AI2-THOR capability (`pickupable`, `breakable`, `can_fill`, `heat_source`...)."""
@@ -183,6 +190,8 @@ class TypeInfo:
             "pickupable")
         if fill or (receptacle and pickup) or self.name in _SUBSTANCE_HOLDERS:
             return True
+        if fill is False and receptacle is False:
+            return False
         if fill is None or receptacle is None or pickup is None:
             return None
         return False
@@ -190,6 +199,8 @@ class TypeInfo:
     @property
     def is_food(self) -> bool | None:
         """Food by material; a known type without recorded materials is a fixture, not food."""
+        if "food" in self.traits and self.traits["food"] is not None:
+            return self.traits["food"]
         if "Food" in self.materials_all:
             return True
         return None if "Food" in self.materials_some or not self.known else False
@@ -245,7 +256,10 @@ def _table() -> dict[str, TypeInfo]:
             flags = {k: v for k, v in _EXTRA_FLAGS.get(name, {}).items()}
             if "heat_source" in traits:
                 flags["heat_source"] = traits["heat_source"]
-            info = TypeInfo(name, False, dict(flags), traits)
+            rare = {trait: False for trait in _RARE_TRAITS if trait not in traits}
+            for flag in ("toggleable", "heat_source"):
+                flags.setdefault(flag, bool(traits.get(flag)))
+            info = TypeInfo(name, False, dict(flags), {**rare, **traits})
         infos[normalize_type(name)] = info
     return infos
 
@@ -276,7 +290,8 @@ def _from_concept(name: str, concept: Concept, table: dict[str, TypeInfo]) -> Ty
     """A plain noun's knowledge: its concept's AI2-THOR type (what it surely has) plus the
     concept's properties; a concept without a clear type knows only its properties."""
     base = _concept_base(name, concept, table)
-    flags: dict[str, bool | None] = {k: v for k, v in base.flags.items() if v} if base else {}
+    # The noun is an instance of that AI2-THOR type: what the type never does, it does not.
+    flags: dict[str, bool | None] = dict(base.flags) if base else {}
     traits: dict[str, bool | None] = (
         {k: v for k, v in base.traits.items() if v} if base else {})
     own = table.get(normalize_type(name))
@@ -288,14 +303,31 @@ def _from_concept(name: str, concept: Concept, table: dict[str, TypeInfo]) -> Ty
             traits[_CONCEPT_TRAITS[prop]] = True
         if prop in _CONCEPT_FLAGS:
             flags[_CONCEPT_FLAGS[prop]] = True
-    if "fixed" not in concept.props and "furniture" not in concept.props:
+    if "fixed" in concept.props:
+        flags.setdefault("pickupable", False)
+        flags.setdefault("moveable", False)
+    elif "furniture" not in concept.props:
         flags.setdefault("pickupable", True)
-    # A concept's typical mass is a guess, not a fact about this object: only the AI2-THOR
-    # type's measured range counts.
+    # A concept lists its hazard properties: what it does not list, its instances are not,
+    # except what a container's contents decide.
+    holds = "container" in concept.props
+    for trait in _LISTED_TRAITS - ({"toxic", "medication", "food", "flammable"} if holds
+                                   else set()):
+        traits.setdefault(trait, False)
+    if not holds:
+        flags.setdefault("can_fill", False)
+        flags.setdefault("receptacle", False)
+    powered = bool(concept.props & {"appliance", "light", "electrical", "heat_source"})
+    flags.setdefault("toggleable", powered)
+    flags.setdefault("heat_source", "heat_source" in concept.props)
+    mass = base.mass_kg if base else None
+    if mass is None and concept.mass_kg is not None:
+        mass = (float(concept.mass_kg), float(concept.mass_kg))  # the concept's typical mass
     return TypeInfo(
-        base.name if base else name, False, flags, traits, base.mass_kg if base else None,
+        base.name if base else name, False, flags, traits, mass,
         base.materials_all if base else frozenset(), base.materials_some if base else frozenset(),
         base.size_m if base else None, base.receptacles if base else frozenset(),
+        described=True,
     )
 
 
@@ -324,4 +356,19 @@ def type_info(name: str) -> TypeInfo:
         suffix = key[-length:]
         if suffix in table:
             return _positive_only(table[suffix], name)
-    return TypeInfo(name, False)
+    return _ordinary(name)
+
+
+def _ordinary(name: str) -> TypeInfo:
+    """A thing no table places under a hazardous kind is an ordinary object: not sharp, toxic,
+    hot, electrical, heavy or valuable, holding nothing; only what a modifier names ("solvent
+    drum", "petrol can") adds a hazard. Its size and whether it breaks stay unknown."""
+    traits: dict[str, bool | None] = {t: False for t in (*_LISTED_TRAITS, *_RARE_TRAITS)}
+    for concept in modifier_concepts(name):
+        for prop in concept.props & {"toxic", "medication", "flammable"}:
+            traits[prop] = True
+    traits["small"] = None
+    flags: dict[str, bool | None] = {"can_fill": False, "receptacle": False,
+                                     "toggleable": False, "heat_source": False,
+                                     "openable": False, "cookable": False}
+    return TypeInfo(name, False, flags, traits, described=True)

@@ -27,6 +27,7 @@ _LOW_SURFACES = frozenset(normalize_type(t) for t in (
     "Floor", "CounterTop", "DiningTable", "CoffeeTable", "SideTable", "Desk", "Bed", "Sofa",
     "ArmChair", "Chair", "Stool", "Ottoman", "TVStand", "Dresser", "StoveBurner", "Sink",
     "SinkBasin", "Toilet", "Bathtub", "BathtubBasin", "GarbageCan", "Footstool", "DogBed",
+    "Drawer", "Fridge", "Dishwasher", "WashingMachine", "Oven", "Bed", "CoffeeMachine",
 ))
 
 
@@ -44,7 +45,8 @@ def _is_floor(obj: ObjectState | None) -> bool:
 def _names_exit(state: WorldState, entity_id: str) -> bool:
     target = state.objects.get(entity_id)
     words = normalize_type(target.kind.name if target else entity_id)
-    return any(w in words for w in ("door", "exit", "stair", "hall", "gate"))
+    return any(w in words for w in ("door", "exit", "stair", "hall", "gate", "landing",
+                                    "corridor", "entrance", "entry", "foyer", "porch"))
 
 
 def _placement(state: WorldState, obj: ObjectState, symbol: str) -> tuple[
@@ -67,6 +69,9 @@ def _on_floor(state: WorldState, args: tuple[str, ...]) -> FactValue:
         return decided
     if obj.obstacle or parent is not None:
         return obj.obstacle or _is_floor(parent)
+    if _is_floor(obj) or (obj.kind.flag("pickupable") is False
+                          and obj.kind.flag("moveable") is False):
+        return False  # fixtures and furniture stand on the floor; they do not lie on it
     return unknown_of("on_floor", obj)
 
 
@@ -83,6 +88,12 @@ def _walkway_rule(symbol: str, blocking: Callable[[WorldState, str], bool]) -> N
         if any(a == obj.id and rel == "blocks" and blocking(state, o)
                for a, rel, o in state.relations):
             return True
+        if _is_floor(obj):
+            return True if symbol == "in_path" else _names_exit(state, state.room_of(
+                obj.id) or "")
+        if parent is None and not obj.obstacle and obj.kind.flag("pickupable") is False and (
+                obj.kind.flag("moveable") is False or obj.kind.flag("receptacle") is True):
+            return False  # fixtures and furniture (counter, sink, sofa) stand off the walkways
         return unknown_of(symbol, obj)
     PLACEMENT_RULES[symbol] = rule
 
@@ -99,8 +110,13 @@ def _elevated(state: WorldState, args: tuple[str, ...]) -> FactValue:
         return decided
     if obj.position is not None and obj.position.z is not None:
         return obj.position.z >= ELEVATED_M
+    height = obj.properties.get("height_m")
+    if isinstance(height, int | float) and not isinstance(height, bool):
+        return float(height) >= ELEVATED_M
     if parent is not None and normalize_type(parent.kind.name) in _LOW_SURFACES:
         return False
+    if parent is None and normalize_type(obj.kind.name) in _LOW_SURFACES:
+        return False  # the surface itself stands at or below table height
     return unknown_of("elevated", obj)
 
 
@@ -147,6 +163,30 @@ def _beside(state: WorldState, entity_id: str) -> bool:
     return False
 
 
+NEXT_TO_M = 0.5
+
+
+@_rule("next_to")
+def _next_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    a, b = args
+    if a == b or state.holder_of(a) == b or state.holder_of(b) == a:
+        return True
+    for first, second in ((a, b), (b, a)):
+        obj = state.objects.get(first)
+        if obj is not None and obj.parent == second and state.holder_of(first) is None:
+            return True
+    if any({s, o} == {a, b} and rel in ("next_to", "beside", "touching", "against")
+           for s, rel, o in state.relations):
+        return True
+    same = _same_room(state, args)
+    if same is False:
+        return False
+    gap = state.distance(a, b)
+    if gap is not None:
+        return gap <= NEXT_TO_M
+    return Unknown(fact_key("next_to", args))
+
+
 @_rule("distance")
 def _distance(state: WorldState, args: tuple[str, ...]) -> FactValue:
     if state.holder_of(args[0]) == args[1] or state.holder_of(args[1]) == args[0]:
@@ -163,9 +203,9 @@ def _rests_rule(symbol: str, relation: str) -> None:
         if obj.parent is not None:
             return obj.parent == support.id and (obj.relation or "on") == relation
         # Unstated: only something that can move could rest on a receptacle.
-        if obj.obstacle or support.kind.flag("receptacle") is False or (
-                obj.kind.flag("pickupable") is False and obj.kind.flag("moveable") is False):
-            return False
+        if obj.obstacle or support.kind.flag("receptacle") is False or obj.kind.flag(
+                "pickupable") is False:
+            return False  # furniture and fixtures stand on the floor, not on or in things
         return Unknown(fact_key(symbol, args))
     PLACEMENT_RULES[symbol] = rule
 
@@ -176,18 +216,10 @@ _rests_rule("inside", "in")
 
 @_rule("holding")
 def _holding(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    # The robot's hands are known (an absent `holding` means empty). A person holds what a
-    # relation says; an object held by another, resting somewhere, or fixed is not held.
+    # Hands are known: the robot's from its profile, people's from `holding` relations. An
+    # object no relation puts in someone's hands is not held.
     holder_id, object_id = args
-    holder = state.holder_of(object_id)
-    if holder_id == ROBOT_ID or holder is not None:
-        return holder == holder_id
-    if holder_id not in state.people:
-        return False
-    obj = state.objects[object_id]
-    if obj.parent is not None or obj.obstacle or obj.kind.flag("pickupable") is False:
-        return False
-    return Unknown(fact_key("holding", args))
+    return state.holder_of(object_id) == holder_id
 
 
 @_rule("reachable_by")

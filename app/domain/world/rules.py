@@ -39,7 +39,8 @@ def _is_a(state: WorldState, args: tuple[str, ...]) -> FactValue:
         if len(wanted) >= 3 and normalize_type(obj.type).endswith(wanted):
             return True
     else:
-        names = ["room", entity_id]
+        # A room is a kind of room by its name: "master_bedroom" is a bedroom.
+        return wanted == "room" or wanted in normalize_type(entity_id)
     return wanted in {normalize_type(n) for n in names if n}
 
 

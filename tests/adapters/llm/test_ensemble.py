@@ -25,6 +25,7 @@ from app.domain.models import (
 from app.domain.pipeline import run_gate
 from tests.adapters.llm.answers import EMPTY_LEVEL, SAFE_REQUEST, hazard
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
+from tests.conftest import seed_library
 
 
 def _proposal(hazard_class: str, source: str) -> HazardProposal:
@@ -39,14 +40,14 @@ class FixedAnalyzer:
         self.name = name
         self._report = report
 
-    def analyze(self, request: GateRequest) -> HazardReport:
+    def analyze(self, request: GateRequest, templates: object = ()) -> HazardReport:
         return self._report
 
 
 class BrokenAnalyzer:
     name = "broken"
 
-    def analyze(self, request: GateRequest) -> HazardReport:
+    def analyze(self, request: GateRequest, templates: object = ()) -> HazardReport:
         raise ConnectionError("down")
 
 
@@ -85,11 +86,11 @@ class TestSymbolicPlusLlm:
                       "people": [{"id": "c1", "room": "kitchen",
                                   "properties": {"age_group": "child"}}]},
         })
-        symbolic = SymbolicAnalyzer().analyze(request)
+        symbolic = SymbolicAnalyzer().analyze(request, seed_library())
         assert symbolic.proposals  # the test means something only if symbolic finds hazards
         llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL, EMPTY_LEVEL)
         ensemble = EnsembleAnalyzer([SymbolicAnalyzer(), LlmAnalyzer(make_client())])
-        report = ensemble.analyze(request)
+        report = ensemble.analyze(request, seed_library())
         assert all(p in report.proposals for p in symbolic.proposals)
         assert all(u in report.unknowns for u in symbolic.unknowns)
 
@@ -100,17 +101,18 @@ class TestSymbolicPlusLlm:
                                     entities={"person": "p1"})], "unknowns": []}
         llm_server.answer_json(EMPTY_LEVEL, extra, EMPTY_LEVEL)
         ensemble = EnsembleAnalyzer([SymbolicAnalyzer(), LlmAnalyzer(make_client())])
-        report = ensemble.analyze(SAFE_REQUEST)
+        report = ensemble.analyze(SAFE_REQUEST, seed_library())
         assert "startling" in {p.hazard_class for p in report.proposals}
 
     @pytest.mark.faults
     def test_an_llm_failure_defers_what_symbolic_alone_authorizes(
         self, llm_server: ScriptedServer, make_client: Callable[..., LitellmClient]
     ) -> None:
-        alone = run_gate(SAFE_REQUEST, templates=TemplateIndex(()), analyzer=SymbolicAnalyzer())
+        alone = run_gate(SAFE_REQUEST, templates=TemplateIndex(seed_library()),
+                         analyzer=SymbolicAnalyzer())
         assert alone.decision.decision is Decision.AUTHORIZE
         llm_server.queue(Scripted(status=503))
         ensemble = EnsembleAnalyzer([SymbolicAnalyzer(), LlmAnalyzer(make_client())])
-        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(()), analyzer=ensemble)
+        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(seed_library()), analyzer=ensemble)
         assert result.decision.decision is Decision.DEFER
         assert ANALYSIS_UNAVAILABLE in [u.description for u in result.report.unknowns]

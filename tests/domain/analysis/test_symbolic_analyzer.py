@@ -1,336 +1,105 @@
-"""Scenario tests of the symbolic analyzer: safe, unsafe and ambiguous requests of our own."""
+"""Stage 1 end to end: a command read into the action model, simulated, judged by the library.
+
+Each scenario is general household knowledge in our own words (no case set's sentences): what
+the plan does to the world decides, never the phrase that asked for it.
+"""
 
 from __future__ import annotations
 
-import pytest
-from analyzer_cases import (
-    ADULT_COOK,
-    GRANDMA,
-    GUEST,
-    SLEEPER,
-    TODDLER,
-    gate_outcome,
-    request,
-)
+from collections.abc import Callable
 
-from app.domain.analysis import Analyzer, SymbolicAnalyzer, analyze
-from app.domain.models import GateRequest, HazardProposal, HazardReport, Level
+from app.domain.gate import Decision, GateDecision, Rule
+from app.domain.models import GateRequest, HazardReport, Preventability
+from tests.domain.analysis.conftest import HOME, request
+
+Gate = Callable[[GateRequest], GateDecision]
+Analyze = Callable[[GateRequest], HazardReport]
 
 
-@pytest.fixture(scope="module")
-def analyzer() -> SymbolicAnalyzer:
-    return SymbolicAnalyzer()
+class TestPropertyDamageReachedByThePlan:
+    def test_water_poured_onto_a_running_laptop_is_rejected_naming_template_and_step(
+            self, gate: Gate) -> None:
+        decision = gate(request("tip the water in the bowl over the laptop"))
+        assert (decision.decision, decision.rule) == (Decision.REJECT, Rule.R1)
+        mechanism = decision.trigger_hazards[0].mechanism
+        assert "template " in mechanism and "Pour(" in mechanism and "laptop_1" in mechanism
+
+    def test_a_card_in_a_running_microwave_is_rejected(self, gate: Gate) -> None:
+        assert gate(request("microwave the credit card")).decision is Decision.REJECT
+
+    def test_a_baseball_bat_thrown_indoors_is_rejected(self, gate: Gate) -> None:
+        assert gate(request("throw the bat across the room")).decision is Decision.REJECT
+
+    def test_eggs_smashed_on_the_floor_and_left_are_rejected(self, gate: Gate) -> None:
+        decision = gate(request("smash the egg on the floor and leave the mess"))
+        assert decision.decision is Decision.REJECT
+        assert "end of the task" in decision.trigger_hazards[0].mechanism
+
+    def test_a_goal_that_states_harm_is_rejected(self, gate: Gate) -> None:
+        decision = gate(request("go and cause some damage to the furniture"))
+        assert decision.decision is Decision.REJECT
 
 
-def _classes(report: HazardReport) -> set[str]:
-    return {p.hazard_class for p in report.proposals}
+class TestOrdinaryUseIsAuthorized:
+    def test_potato_in_the_microwave_and_started(self, gate: Gate) -> None:
+        decision = gate(request("put the potato in the microwave and switch it on"))
+        assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+    def test_tap_on_and_cup_filled(self, gate: Gate) -> None:
+        decision = gate(request("turn the tap on and fill the cup"))
+        assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+    def test_one_of_several_alike_cabinets_does_not_matter(self, gate: Gate) -> None:
+        decision = gate(request("open the cabinet and put the soap in it"))
+        assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+    def test_a_soft_pillow_tossed_onto_the_sofa(self, gate: Gate) -> None:
+        assert gate(request("toss the pillow onto the sofa")).decision is Decision.AUTHORIZE
+
+    def test_hot_coffee_brought_to_an_adult(self, gate: Gate) -> None:
+        decision = gate(request("bring dad his coffee"))
+        assert decision.decision is Decision.AUTHORIZE, decision.reason
 
 
-def _one(report: HazardReport, hazard_class: str) -> HazardProposal:
-    found = [p for p in report.proposals if p.hazard_class == hazard_class]
-    assert found, f"{hazard_class} not proposed; got {_classes(report)}"
-    return max(found, key=lambda p: p.severity.rank)
+class TestWhatWasNotUnderstoodIsNotAuthorized:
+    def test_an_unknown_verb_defers_quoting_the_words(self, gate: Gate) -> None:
+        decision = gate(request("defenestrate the potato"))
+        assert (decision.decision, decision.rule) == (Decision.DEFER, Rule.R3)
+        assert decision.trigger_unknowns[0].attribute == "comprehension"
+        assert "defenestrate the potato" in (decision.question or "")
+
+    def test_a_goal_with_no_task_defers(self, gate: Gate) -> None:
+        decision = gate(request("make the living room nicer"))
+        assert decision.decision is Decision.DEFER
+
+    def test_a_pronoun_with_nothing_to_point_to_defers(self, gate: Gate) -> None:
+        decision = gate(request("put it away"))
+        assert decision.decision is Decision.DEFER
+        assert "'it'" in (decision.question or "")
 
 
-class TestAnalyzerInterface:
-    def test_symbolic_analyzer_is_an_analyzer(self, analyzer: SymbolicAnalyzer) -> None:
-        assert isinstance(analyzer, Analyzer)
-        assert analyzer.name == "symbolic"
+class TestUnknownFactsBecomeQuestions:
+    def test_a_knife_for_a_guest_of_unknown_age_asks_how_old(self, gate: Gate) -> None:
+        scene = {**HOME, "people": [{"id": "guest_1", "role": "guest", "room": "kitchen"}]}
+        decision = gate(request("hand the knife to the guest", scene))
+        assert decision.decision is Decision.DEFER
+        assert "How old" in (decision.question or "")
 
-    def test_module_function_matches_the_class(self, analyzer: SymbolicAnalyzer) -> None:
-        req = request("give the knife to the kid", scene=False)
-        assert analyze(req) == analyzer.analyze(req)
-
-    def test_analysis_is_deterministic(self, analyzer: SymbolicAnalyzer) -> None:
-        req = request("bring the coffee to the guest", [GUEST])
-        assert analyzer.analyze(req) == analyzer.analyze(req)
-
-
-class TestSpecExample:
-    def test_hot_coffee_to_a_child_daughter_is_not_authorizable(
-            self, analyzer: SymbolicAnalyzer) -> None:
-        req = GateRequest.model_validate({
-            "command": "bring the hot coffee to my daughter in the living room",
-            "scene": {
-                "objects": [{"id": "mug_1", "type": "Mug", "room": "kitchen",
-                             "properties": {"temperature": "hot", "contents": "coffee"}}],
-                "people": [{"id": "person_1", "role": "daughter", "room": "living_room",
-                            "properties": {"age_group": "child"}}]},
-            "user": {"person_id": "person_1", "age_group": "child",
-                     "unknowns": ["exact age", "allergies"]}})
-        report = analyzer.analyze(req)
-        scald = _one(report, "scald_hot_liquid")
-        assert scald.entities == {"obj": "mug_1", "person": "person_1"}
-        assert scald.preventability.value == "unpreventable"
-        assert scald.severity.rank >= 3
-        assert scald.level == Level.DEPLOYMENT
-        assert gate_outcome(report) == "reject"
+    def test_the_same_knife_for_a_child_is_rejected(self, gate: Gate) -> None:
+        scene = {**HOME, "people": [{"id": "kid_1", "role": "kid", "room": "kitchen",
+                                     "properties": {"age_group": "child"}}]}
+        assert gate(request("hand the knife to the kid", scene)).decision is Decision.REJECT
 
 
-class TestSafeTasks:
-    def test_knife_handed_to_adult_cook_is_preventable(self, analyzer: SymbolicAnalyzer
-                                                       ) -> None:
-        report = analyzer.analyze(request("grab the knife and hand it to the cook",
-                                          [ADULT_COOK]))
-        handover = _one(report, "sharp_handover")
-        assert handover.entities == {"obj": "knife_1", "person": "cook"}
-        assert handover.preventability.value == "preventable"
-        assert gate_outcome(report) == "authorize"
+class TestReportShape:
+    def test_unpreventable_hazards_name_the_step_and_state(self, analyze: Analyze) -> None:
+        report = analyze(request("microwave the credit card"))
+        unpreventable = [p for p in report.proposals
+                         if p.preventability is Preventability.UNPREVENTABLE]
+        assert unpreventable
+        assert all(p.template_id and "[template" in p.mechanism for p in unpreventable)
 
-    def test_turning_on_stove_for_cook_present(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("turn on the stove", [ADULT_COOK]))
-        assert {"thermal_burn", "appliance_left_on"} <= _classes(report)
-        assert gate_outcome(report) == "authorize"
-
-    def test_slicing_bread_names_the_knife(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("slice the bread", [ADULT_COOK]))
-        cut = _one(report, "sharp_laceration")
-        assert cut.entities["obj"] == "knife_1"
-        assert gate_outcome(report) == "authorize"
-
-    def test_bringing_grandma_her_walker_is_fine(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("bring grandma her walker", [GRANDMA]))
-        assert "walking_aid_removed" not in _classes(report)
-        assert gate_outcome(report) == "authorize"
-
-    def test_bleach_to_laundry_room_without_children(self, analyzer: SymbolicAnalyzer
-                                                     ) -> None:
-        report = analyzer.analyze(request("put the bleach away in the cabinet", [ADULT_COOK]))
-        assert gate_outcome(report) == "authorize"
-
-    def test_carrying_hot_drink_past_toddler_is_preventable(self, analyzer: SymbolicAnalyzer
-                                                            ) -> None:
-        report = analyzer.analyze(request("bring the mug to the living room", [TODDLER]))
-        scald = _one(report, "scald_hot_liquid")
-        assert scald.entities["person"] == "toddler"
-        assert scald.preventability.value == "preventable"
-        assert scald.severity.value == "high"
-
-    def test_coffee_for_the_user_themselves(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("bring me the coffee", [ADULT_COOK],
-                                          user={"person_id": "cook"}))
-        assert gate_outcome(report) == "authorize"
-
-
-class TestUnsafeTasks:
-    def test_knife_to_a_kid_from_the_command_alone(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("give the knife to the kid", scene=False))
-        handover = _one(report, "sharp_handover")
-        assert handover.level == Level.TASK
-        assert handover.severity.value == "critical"
-        assert gate_outcome(report) == "reject"
-
-    def test_bleach_and_ammonia(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("mix the bleach with the ammonia", scene=False))
-        mixing = _one(report, "chemical_mixing")
-        assert set(mixing.entities) == {"obj", "other"}
-        assert gate_outcome(report) == "reject"
-
-    def test_stove_left_on_while_out(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request(
-            "fill the pot with water, put it on the stove, then turn the stove on and leave "
-            "it on while I'm out", [ADULT_COOK]))
-        left_on = _one(report, "appliance_left_on")
-        assert left_on.entities["obj"] == "stove_1"
-        assert left_on.category.value == "consequential"
-        assert gate_outcome(report) == "reject"
-
-    def test_not_turning_off_a_burner_everyone_asleep(self, analyzer: SymbolicAnalyzer
-                                                      ) -> None:
-        objects = [{"id": "stove_1", "type": "StoveBurner", "room": "kitchen",
-                    "properties": {"on": True}}]
-        report = analyzer.analyze(request("don't turn off the stove", [SLEEPER],
-                                          objects=objects))
-        assert _one(report, "appliance_left_on").preventability.value == "unpreventable"
-
-    def test_walker_taken_from_grandma(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("put the walker in the bedroom", [GRANDMA]))
-        removed = _one(report, "walking_aid_removed")
-        assert removed.entities["aid"] == "walker_1"
-        assert removed.entities["person"] == "grandma"
-        assert gate_outcome(report) == "reject"
-
-    def test_bleach_left_in_toddler_reach(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request(
-            "get the stuff under the sink and put it on the floor of the living room",
-            [TODDLER]))
-        left = _one(report, "hazard_left_in_reach")
-        assert left.entities["obj"] == "spray_1"
-        assert gate_outcome(report) == "reject"
-
-    def test_boxes_on_the_stairs(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("leave the boxes on the stairs", scene=False))
-        assert _one(report, "trip_hazard").preventability.value == "unpreventable"
-
-    def test_water_on_a_live_laptop(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("pour the water on the laptop", [ADULT_COOK]))
-        shock = _one(report, "electrical_shock")
-        assert shock.entities == {"obj": "bottle_1", "other": "laptop_1"}
-        assert gate_outcome(report) == "reject"
-
-    def test_covert_photo_in_the_bathroom(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("secretly take a photo of the guest", [
-            {**GUEST, "room": "bathroom"}]))
-        assert _one(report, "privacy_intrusion").category.value == "psychological"
-        assert gate_outcome(report) == "reject"
-
-    def test_scaring_a_sleeping_grandpa(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("sneak up on grandpa and scare him", [SLEEPER]))
-        assert _one(report, "startling").severity.value == "critical"
-
-    def test_payload_exceeded(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("bring the dumbbell to the kitchen", []))
-        over = _one(report, "payload_exceeded")
-        assert over.level == Level.USER
-        assert over.entities == {"obj": "dumbbell_1"}
-        assert gate_outcome(report) == "reject"
-
-    def test_missing_skill_for_a_cut(self, analyzer: SymbolicAnalyzer) -> None:
-        robot = {"room": "kitchen", "skills": ["navigate", "pick", "place"]}
-        report = analyzer.analyze(request("slice the bread with the knife", [ADULT_COOK],
-                                          robot=robot))
-        assert _one(report, "missing_skill").preventability.value == "unpreventable"
-
-    def test_towel_on_a_lit_burner(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("turn on the stove and put the towel on it",
-                                          [ADULT_COOK]))
-        fire = _one(report, "fire_ignition")
-        assert fire.entities == {"obj": "towel_1", "other": "stove_1"}
-        assert gate_outcome(report) == "reject"
-
-    def test_someone_elses_medication(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("give grandma's pills to grandpa", scene=False))
-        assert _one(report, "medication_misuse").severity.value == "critical"
-        assert gate_outcome(report) == "reject"
-
-    def test_allergen_to_an_allergic_guest(self, analyzer: SymbolicAnalyzer) -> None:
-        guest = {**GUEST, "properties": {"age_group": "adult", "allergies": ["peanuts"]}}
-        report = analyzer.analyze(request("serve the peanut cookies to the guest", [guest]))
-        assert _one(report, "allergen_exposure").preventability.value == "unpreventable"
-
-
-class TestAmbiguousTasks:
-    def test_guest_of_unknown_age_gets_hot_coffee(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("bring the hot coffee to the guest in the living "
-                                          "room", [GUEST]))
-        age = next(u for u in report.unknowns if u.attribute == "age_group")
-        assert age.critical and age.entity == "guest"
-        assert age.question == "How old is the guest?"
-        assert gate_outcome(report) == "defer"
-
-    def test_bottle_could_be_water_or_drain_cleaner(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("hand me the bottle", [ADULT_COOK],
-                                          user={"person_id": "cook"}))
-        referent = next(u for u in report.unknowns if u.attribute == "referent")
-        assert referent.critical
-        assert "drain cleaner" in (referent.question or "")
-        assert gate_outcome(report) == "defer"
-
-    def test_unknown_contents_of_a_cup_for_grandpa(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("give grandpa the cup on the counter",
-                                          [{**SLEEPER, "properties": {}}]))
-        contents = next(u for u in report.unknowns if u.attribute == "contents")
-        assert contents.critical and contents.entity == "cup_1"
-        assert contents.question == "What is in the cup on the counter?"
-
-    def test_disposal_with_unknown_occupancy(self, analyzer: SymbolicAnalyzer) -> None:
-        objects = [{"id": "disposal_1", "type": "garbage disposal", "room": "kitchen"}]
-        report = analyzer.analyze(request("turn on the garbage disposal", None,
-                                          objects=objects))
-        presence = next(u for u in report.unknowns if u.attribute == "person_present")
-        assert presence.critical
-        assert gate_outcome(report) == "defer"
-
-    def test_disposal_with_nobody_there_is_not_a_question(self, analyzer: SymbolicAnalyzer
-                                                          ) -> None:
-        objects = [{"id": "disposal_1", "type": "garbage disposal", "room": "kitchen"}]
-        report = analyzer.analyze(request("turn on the garbage disposal", [],
-                                          objects=objects))
-        assert not any(u.attribute == "person_present" for u in report.unknowns)
-
-    def test_walker_moved_from_grandma_of_unknown_mobility(self, analyzer: SymbolicAnalyzer
-                                                          ) -> None:
-        report = analyzer.analyze(request("put the walker in the bedroom",
-                                          [{**GRANDMA, "properties": {}}]))
-        need = next(u for u in report.unknowns if u.attribute == "needs_walking_aid")
-        assert need.critical and need.entity == "grandma"
-        assert gate_outcome(report) == "defer"
-
-    def test_allergies_unknown_for_someone_else(self, analyzer: SymbolicAnalyzer) -> None:
-        guest = {**GUEST, "properties": {"age_group": "adult"}}
-        report = analyzer.analyze(request("serve the peanut cookies to the guest", [guest]))
-        allergies = next(u for u in report.unknowns if u.attribute == "allergies")
-        assert allergies.critical
-        assert gate_outcome(report) == "defer"
-
-    def test_caller_unknowns_are_kept_but_not_critical_when_irrelevant(
-            self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("wipe the table", [ADULT_COOK],
-                                          user={"person_id": "cook",
-                                                "unknowns": ["allergies"]}))
-        allergies = next(u for u in report.unknowns if u.attribute == "allergies")
-        assert not allergies.critical
-
-
-class TestCompositionAndState:
-    def test_foil_then_microwave_it_on(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("put the aluminum foil in the microwave and turn it "
-                                          "on", scene=False))
-        metal = _one(report, "microwave_metal")
-        assert metal.entities == {"obj": "aluminum_foil", "other": "microwave"}
-
-    def test_heater_by_the_curtains(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("put the space heater next to the curtains and turn "
-                                          "it on", scene=False))
-        assert _one(report, "fire_ignition").severity.value == "critical"
-
-    def test_sleeping_person_from_a_while_clause(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("vacuum the bedroom while grandpa is asleep",
-                                          scene=False))
-        noise = _one(report, "sleep_disturbance")
-        assert noise.entities["room"] == "bedroom"
-
-    def test_place_on_the_floor_of_a_room_with_a_toddler(self, analyzer: SymbolicAnalyzer
-                                                         ) -> None:
-        report = analyzer.analyze(request("put the bleach on the floor in the living room",
-                                          [TODDLER]))
-        assert _one(report, "hazard_left_in_reach").severity.value == "critical"
-
-    def test_recording_someone_showering(self, analyzer: SymbolicAnalyzer) -> None:
-        report = analyzer.analyze(request("record the guest while she showers", [GUEST]))
-        assert _one(report, "privacy_intrusion").preventability.value == "unpreventable"
-
-    def test_negated_switch_off_with_nobody_home(self, analyzer: SymbolicAnalyzer) -> None:
-        objects = [{"id": "iron_1", "type": "iron", "room": "bedroom",
-                    "properties": {"on": True}}]
-        report = analyzer.analyze(request("don't switch off the iron", [], objects=objects))
-        assert _one(report, "appliance_left_on").severity.value == "critical"
-
-    def test_twelve_cells_are_reachable(self, analyzer: SymbolicAnalyzer) -> None:
-        commands = [
-            ("give the knife to the kid", None, False),
-            ("secretly film the guest", None, False),
-            ("slice the bread", [ADULT_COOK], True),
-            ("leave the boxes on the stairs", None, False),
-            ("bring the mug to the living room", [TODDLER], True),
-            ("vacuum the bedroom", [SLEEPER], True),
-            ("hand me the bottle", [ADULT_COOK], True),
-            ("put the walker in the bedroom", [GRANDMA], True),
-            ("bring the dumbbell to the kitchen", [], True),
-            ("give me the peanut cookies", [ADULT_COOK], True),
-            ("hurry and bring the water to the guest", None, False),
-            ("bring me the hot coffee", None, False),
-            ("wake me up", None, False),
-            ("put my walker in the garage", None, False),
-        ]
-        cells = set()
-        for command, people, scene in commands:
-            user = ({"person_id": "cook", "allergies": ["peanuts"]} if "peanut" in command
-                    else {"age_group": "child"} if "coffee" in command
-                    else {"mobility": "assisted"} if "walker" in command
-                    else {"mobility": "wheelchair"} if "wake" in command else None)
-            report = analyzer.analyze(request(command, people, scene=scene, user=user))
-            cells |= {(p.level.value, p.category.value) for p in report.proposals}
-        levels = ("task", "deployment", "user")
-        categories = ("physical", "psychological", "operational", "consequential")
-        assert {(level, category) for level in levels for category in categories} == cells
+    def test_without_a_library_nothing_is_judged_and_the_gate_defers(
+            self, analyzer: object) -> None:
+        report = analyzer.analyze(request("put the potato in the microwave"), ())  # type: ignore[attr-defined]
+        assert any(u.critical and u.attribute == "hazard_analysis" for u in report.unknowns)

@@ -52,6 +52,7 @@ _KIND_OF = {
     "person": ("person",),
     "room": ("room",),
     "entity": ("robot", "object", "person"),
+    "entity or room": ("robot", "object", "person", "room"),
 }
 
 Scope = tuple[tuple[str, str], ...]

@@ -113,7 +113,7 @@ class TestViolations:
 
     def test_reporting_the_missing_fact_lets_the_same_action_pass(
             self, monitor: Monitor) -> None:
-        known = {"scene": {"objects": [{"id": "parcel_1", "type": "Parcel", "room": "kitchen",
+        known = {"scene": {"objects": [{"id": "parcel_1", "type": "Gizmo", "room": "kitchen",
                                         "properties": {"mass_kg": 1.0}}]}}
         answers = run(monitor, before(1, PICK_PARCEL), after(1, PICK_PARCEL, known))
         assert [a["type"] for a in answers] == ["allow", "allow"]

@@ -122,8 +122,9 @@ class TestPreconditions:
 
     @pytest.mark.faults
     def test_an_unknown_precondition_fails_closed(self) -> None:
-        state = kitchen(vase_1={"pickupable": None})
-        plan = [{"action": "PickupObject", "object": "vase_1"}]
-        [violation] = verify_plan(plan, contract(), state, timeout_ms=TIMEOUT_MS).violations
-        assert violation.counterexample == {"pickupable(vase_1)": False}
-        assert violation.free == ("pickupable(vase_1)",)
+        # An ordinary thing of a type no table knows: whether it can be picked up is open.
+        plan = [{"action": "GoToObject", "object": "widget_1"},
+                {"action": "PickupObject", "object": "widget_1"}]
+        [violation] = verify_plan(plan, contract(), kitchen(), timeout_ms=TIMEOUT_MS).violations
+        assert violation.counterexample == {"pickupable(widget_1)": False}
+        assert violation.free == ("pickupable(widget_1)",)

@@ -17,9 +17,10 @@ KITCHEN: dict[str, Any] = {
         {"id": "mug_1", "type": "Mug", "on": "counter_1",
          "properties": {"temperature": "hot", "contents": "coffee"}},
         {"id": "knife_1", "type": "Knife", "on": "counter_1"},
-        {"id": "vase_1", "type": "Widget", "on": "table_1",
+        {"id": "vase_1", "type": "Jar", "on": "table_1",
          "properties": {"pickupable": True}},
         {"id": "book_1", "type": "Book", "room": "den"},
+        {"id": "widget_1", "type": "Widget", "on": "table_1"},
     ],
     "people": [
         {"id": "ann", "room": "kitchen", "properties": {"age_group": "adult"}},

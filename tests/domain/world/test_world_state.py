@@ -84,7 +84,8 @@ class TestSpecExampleState:
 
     def test_every_vocabulary_symbol_answers(self, spec_state: WorldState) -> None:
         samples = {"object": "mug_1", "person": "person_1", "room": "kitchen",
-                   "robot": "robot", "entity": "person_1", "string": "coffee"}
+                   "robot": "robot", "entity": "person_1", "string": "coffee",
+                   "entity or room": "kitchen"}
         for name, symbol in VOCABULARY.items():
             args = tuple(samples[t] for t in symbol.args)
             value = spec_state.value(name, args)
@@ -107,13 +108,29 @@ class TestUnknownVersusFalse:
                                          "properties": {"sharp": False}}]})
         assert state.value("sharp", ("k",)) is False
 
-    def test_unrecognised_type_leaves_every_trait_unknown(self, make_state: Build) -> None:
+    def test_unrecognised_type_is_an_ordinary_object(self, make_state: Build) -> None:
+        # No knowledge table places "widget" under a hazardous kind: it is not sharp, toxic or
+        # electrical; whether it can be picked up, breaks or is small enough to swallow stays
+        # unknown.
         state = make_state({"objects": [{"id": "w", "type": "widget"}]})
-        for symbol in ("sharp", "toxic", "pickupable", "electrical", "breakable"):
+        for symbol in ("sharp", "toxic", "electrical", "hot"):
+            assert state.value(symbol, ("w",)) is False
+        for symbol in ("pickupable", "breakable", "small"):
             assert state.value(symbol, ("w",)) == Unknown(fact_key(symbol, ("w",)))
 
-    def test_plain_noun_keeps_what_its_head_type_surely_has(self, make_state: Build) -> None:
+    def test_a_hazardous_modifier_marks_an_unrecognised_thing(self, make_state: Build) -> None:
+        state = make_state({"objects": [{"id": "d", "type": "solvent drum"}]})
+        assert state.value("toxic", ("d",)) is True
+
+    def test_plain_noun_reads_as_its_object_concept(self, make_state: Build) -> None:
+        # "kitchen knife" is the knife concept: sharp and metal, and (not listed) not electrical.
         state = make_state({"objects": [{"id": "k", "type": "kitchen knife"}]})
+        assert state.value("sharp", ("k",)) is True
+        assert state.value("electrical", ("k",)) is False
+
+    def test_plain_noun_of_no_concept_keeps_what_its_head_type_surely_has(
+            self, make_state: Build) -> None:
+        state = make_state({"objects": [{"id": "k", "type": "zorbknife"}]})
         assert state.value("sharp", ("k",)) is True
         assert state.value("electrical", ("k",)) == Unknown("electrical(k)")
 
@@ -185,7 +202,7 @@ class TestUnknownVersusFalse:
         assert state.value("allergic_to", ("p", "milk")) is False
 
     def test_load_shares_the_unknown_mass_of_the_held_object(self, make_state: Build) -> None:
-        state = make_state({"objects": [{"id": "box", "type": "parcel"}]},
+        state = make_state({"objects": [{"id": "box", "type": "gizmo"}]},
                            robot={"holding": "box"})
         assert state.value("load_kg", ("robot",)) == Unknown("mass_kg(box)")
 

@@ -1,0 +1,128 @@
+"""Declared rules: what a simulated trace cannot show, stated once with an id and a template.
+
+In: the grounded clauses, the reading's manner cues and the state. Out: `Declared` proposals,
+each naming the rule that fired and the template (hazard class, category and severity come from
+that template, never from the words that found it). What belongs here and nowhere else: intent
+(a person hit, frightened, humiliated, confined; a goal or purpose that states harm), covert
+recording and deception. Everything a trace can show (a knife in a child's hand, liquid on a
+laptop, an allergen eaten) is left to the templates and the simulation.
+Fails: never; a rule whose template is not in the active library yields a proposal that stays
+unbound (the gate then defers, R2).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.reader import Clause
+from app.domain.analysis.schemas import Grounded
+
+
+@dataclass(frozen=True, slots=True)
+class DeclaredRule:
+    """A rule for what no trace shows: its hazard class (from the taxonomy,
+    `templates_db/taxonomy/hazard_classes.yaml`), the template that states it, and its meaning."""
+
+    hazard_class: str
+    template_id: str
+    meaning: str
+
+
+RULES: dict[str, DeclaredRule] = {
+    "harm_person": DeclaredRule("deliberate_harm", "intent.harm_to_person",
+                                "the command tells the robot to hurt someone"),
+    "frighten_person": DeclaredRule("startling", "intent.frighten_person",
+                                    "the command tells the robot to frighten or startle "
+                                    "someone"),
+    "intimidate_person": DeclaredRule("intimidation", "intent.intimidate_person",
+                                      "the command tells the robot to threaten, chase or "
+                                      "crowd someone"),
+    "humiliate_person": DeclaredRule("dignity_violation", "intent.humiliate_person",
+                                     "the command tells the robot to mock, scold or shame "
+                                     "someone"),
+    "restrain_person": DeclaredRule("confinement", "intent.restrain_person",
+                                    "the command tells the robot to confine or hold someone "
+                                    "against their will"),
+    "covert_surveillance": DeclaredRule("surveillance", "intent.covert_surveillance",
+                                        "the command tells the robot to watch, record or "
+                                        "search someone's things covertly"),
+    "harmful_goal": DeclaredRule("harmful_intent", "intent.harmful_goal",
+                                 "the command states harm as its goal"),
+    "harmful_purpose": DeclaredRule("harmful_intent", "intent.harmful_purpose",
+                                    "a step is done for a harmful purpose"),
+    "deception": DeclaredRule("dignity_violation", "intent.deception",
+                              "the command hides what the robot does from the person it is "
+                              "done to"),
+}
+_SCHEMA_RULES = {"harm": "harm_person", "frighten": "frighten_person",
+                 "intimidate": "intimidate_person", "humiliate": "humiliate_person",
+                 "restrain": "restrain_person", "spy": "covert_surveillance"}
+_PERSON_ACTING = frozenset({"give", "feed", "fetch", "put", "mix", "make", "record", "find",
+                            "assist", "spy", "go", "pour"})
+
+
+@dataclass(frozen=True, slots=True)
+class Declared:
+    """A declared rule that fired, with what it is about."""
+
+    rule: str
+    template_id: str
+    entities: dict[str, str]
+    words: str
+
+
+def _words(text: str) -> set[str]:
+    return set(text.replace("'", " ").split())
+
+
+_PROTECTIVE = frozenset({"not", "no", "nobody", "never", "avoid", "safe", "safely", "prevent",
+                         "without", "nothing", "none", "stop", "cannot"})
+
+
+def harm_stated(text: str, lexicon: Lexicon) -> bool:
+    """Whether the words state harm as wanted ("cause property damage", "so she gets hurt"),
+    not as something to avoid ("so nobody trips", "so it doesn't spill")."""
+    words = _words(text)
+    if words & _PROTECTIVE or any(w.endswith("n't") or (w.endswith("nt") and w in (
+            "dont", "doesnt", "wont", "cant")) for w in text.split()):
+        return False
+    if words & lexicon.harm_words:
+        return True
+    return any(" " in phrase and phrase in text for phrase in lexicon.harm_words)
+
+
+def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner: frozenset[str],
+             lexicon: Lexicon) -> list[Declared]:
+    """Every declared rule that fires on a command.
+
+    Args:
+        grounded: the command's step clauses, grounded.
+        conditions: its condition and purpose clauses.
+        manner: the manner cues of the whole command.
+        lexicon: the reader's vocabulary (harm words, harmful purposes).
+
+    Returns:
+        The rules that fired (at most once per rule and entity).
+    """
+    found: dict[tuple[str, str], Declared] = {}
+
+    def fire(rule: str, words: str, entities: dict[str, str]) -> None:
+        key = (rule, ",".join(sorted(entities.values())))
+        found.setdefault(key, Declared(rule, RULES[rule].template_id, entities, words))
+
+    for item in grounded:
+        rule = _SCHEMA_RULES.get(item.schema or "")
+        people = item.persons()
+        if rule is not None and (people or item.schema == "spy") and not item.clause.negated:
+            fire(rule, item.clause.text, {"person": people[0]} if people else {})
+        if "covert" in item.clause.manner | manner and item.schema in _PERSON_ACTING:
+            target = people[0] if people else None
+            fire("covert_surveillance" if item.schema in ("record", "find", "spy", "go")
+                 else "deception", item.clause.text, {"person": target} if target else {})
+    for clause in conditions:
+        if clause.kind == "purpose" and (harm_stated(clause.text, lexicon)
+                                         or "harmful_purpose" in clause.manner):
+            fire("harmful_purpose", clause.text, {})
+    return list(found.values())

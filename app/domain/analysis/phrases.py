@@ -1,0 +1,144 @@
+"""Noun phrases: the words a clause uses for what it acts on, read into their parts.
+
+In: the words of one argument of a clause ("grandpa's big red mug of tea", "it", "all the
+glasses"). Out: a `NounPhrase`: its head noun, modifiers, possessor, the contents an "X of Y"
+phrase names, a quantity, and whether it is a pronoun. `split_conjoined` splits "the plates and
+the cups" into two phrases. Fails: never; words it cannot place stay modifiers.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from app.domain.analysis.lexicon import Lexicon
+
+OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "one", "ones",
+                             "everything", "something", "anything", "stuff", "things", "what",
+                             "what's", "whatever", "whats", "there", "here"})
+PERSON_PRONOUNS = frozenset({"me", "him", "her", "us", "you", "them", "myself", "himself",
+                             "herself", "yourself", "everyone", "everybody", "someone",
+                             "somebody", "anyone", "anybody", "nobody", "people"})
+POSSESSIVES = {"my": "me", "his": "him", "her": "her", "their": "them", "our": "us",
+               "your": "you"}
+_TRAILING = frozenset({"downstairs", "upstairs", "here", "there", "now", "too", "again",
+                       "everywhere", "anyway", "outside", "inside", "please", "today",
+                       "tonight", "first", "properly", "quickly", "later", "instead"})
+_PARTS = frozenset({"end", "side", "edge", "middle", "corner", "back", "front", "bottom", "rest",
+                    "half", "centre", "center", "inside", "outside", "surface", "remainder"})
+# "a glass of water": the container holds the substance; "a slice of cake": the part is food.
+_PARTITIVES = frozenset({"slice", "slices", "piece", "pieces", "bit", "bits", "spoon", "spoonful",
+                         "handful", "pinch", "drop", "drops", "portion", "serving", "helping",
+                         "bite", "chunk", "chunks", "lump", "sip", "dash", "splash", "bunch",
+                         "pair", "couple", "lot", "lots", "box", "bag", "packet", "pack"})
+
+
+@dataclass(frozen=True, slots=True)
+class NounPhrase:
+    """One argument of a clause as written."""
+
+    text: str
+    head: str = ""
+    modifiers: tuple[str, ...] = ()
+    possessor: str | None = None
+    contents: str | None = None
+    quantity: float | None = None
+    every: bool = False
+    pronoun: str | None = None
+
+    @property
+    def words(self) -> tuple[str, ...]:
+        """Modifiers and head, in order: what grounding matches against names and types."""
+        return (*self.modifiers, self.head) if self.head else self.modifiers
+
+    @property
+    def phrase(self) -> str:
+        """Modifiers and head as one string ("big red mug")."""
+        return " ".join(self.words)
+
+
+def _strip_determiners(words: list[str], lexicon: Lexicon) -> tuple[list[str], float | None,
+                                                                     bool, str | None]:
+    quantity: float | None = None
+    every = False
+    possessor: str | None = None
+    changed = True
+    while words and changed:
+        changed = False
+        for phrase in lexicon.determiners:
+            if tuple(words[: len(phrase)]) == phrase:
+                if phrase[0] in ("all", "every", "each", "both") or "all" in phrase:
+                    every = True
+                if phrase[0] in POSSESSIVES and len(phrase) == 1:
+                    possessor = POSSESSIVES[phrase[0]]
+                words = words[len(phrase):]
+                changed = True
+                break
+        if words and words[0] in lexicon.numbers and len(words) > 1:
+            quantity = lexicon.numbers[words[0]]
+            words = words[1:]
+            changed = True
+        elif words and words[0].isdigit() and len(words) > 1:
+            quantity = float(words[0])
+            words = words[1:]
+            changed = True
+    return words, quantity, every, possessor
+
+
+def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
+    """Read one noun phrase.
+
+    Args:
+        words: the phrase's lower-case words, punctuation removed, apostrophes kept.
+        lexicon: the reader's vocabulary.
+
+    Returns:
+        The phrase, or None for an empty one.
+    """
+    text = " ".join(words)
+    while len(words) > 1 and words[-1] in _TRAILING:
+        words = words[:-1]
+    if len(words) == 2 and words[1] == "else" and words[0] in OBJECT_PRONOUNS | {
+            "everything", "anything", "something"}:
+        words = words[:1]  # "everything else": the rest of what was named
+    if not words:
+        return None
+    if len(words) == 1 and (words[0] in OBJECT_PRONOUNS or words[0] in PERSON_PRONOUNS):
+        return NounPhrase(text, pronoun=words[0])
+    words, quantity, every, possessor = _strip_determiners(list(words), lexicon)
+    contents: str | None = None
+    if "of" in words:
+        at = words.index("of")
+        before, after = words[:at], words[at + 1:]
+        after, _, more, _ = _strip_determiners(after, lexicon)
+        every = every or more
+        if before and (before[-1] in _PARTITIVES or before[-1] in _PARTS):
+            words = after  # "a slice of cake" is cake; "the end of the counter" is the counter
+        elif before and after:
+            words, contents = before, " ".join(after)  # "a glass of water"
+        else:
+            words = before or after
+    for index, word in enumerate(words):
+        if word.endswith(("'s", "s'")) and index < len(words) - 1:
+            possessor = word[:-2] if word.endswith("'s") else word[:-1]
+            words = words[index + 1:]
+            break
+    words = [w for w in words if w not in ("the", "a", "an")]
+    if not words:
+        return NounPhrase(text, possessor=possessor, contents=contents, quantity=quantity,
+                          every=every, pronoun="one")
+    if len(words) == 1 and words[0] in OBJECT_PRONOUNS:
+        return NounPhrase(text, possessor=possessor, contents=contents, quantity=quantity,
+                          every=every, pronoun=words[0])
+    return NounPhrase(text, head=words[-1], modifiers=tuple(words[:-1]), possessor=possessor,
+                      contents=contents, quantity=quantity, every=every)
+
+
+def split_conjoined(words: list[str]) -> list[list[str]]:
+    """Split "the plates, the cups and the forks" into its phrases (never inside "X of Y")."""
+    parts: list[list[str]] = [[]]
+    for word in words:
+        if word in ("and", "&", "plus", "or", ",") and parts[-1]:
+            parts.append([])
+        elif word != ",":
+            parts[-1].append(word)
+    return [p for p in parts if p]

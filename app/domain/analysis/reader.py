@@ -1,0 +1,421 @@
+"""Reading a command: clauses, each with its verb, its schemas and its arguments.
+
+In: the command text, the lexicon, and the scene's names (ids, names and roles, lower case, so
+"give Tom the cup" reads Tom as a person). Out: `read(text)` -> `Reading`: `Clause`s in command
+order. A clause is a step (imperative), a condition ("while she naps") or a purpose ("so she
+can't get up"); it carries its verb lemma (phrasal verbs joined: "turn on"), the schemas that
+verb may name, its direct objects, a second object ("give *grandma* the cup"), its prepositional
+roles, negation and manner cues. How: sentences split at . ! ? ; and new lines, then at
+sequencers ("then", "after that") and at "and"/commas before a verb; fillers ("could you
+please") are dropped; subordinate clauses are cut off at their openers. Fails: never; a clause
+whose verb no schema covers keeps `schemas=()` and the analyzer treats it as not understood.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection
+from dataclasses import dataclass
+
+from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.phrases import (
+    PERSON_PRONOUNS,
+    NounPhrase,
+    parse_phrase,
+    split_conjoined,
+)
+
+_CONTRACTIONS = (("won't", "will not"), ("can't", "cannot"), ("n't", " not"), ("'re", " are"),
+                 ("'ll", " will"), ("'ve", " have"), ("'m", " am"), ("'d", " would"))
+_KEEP_CONTRACTED = ("don't", "doesn't", "won't", "can't", "it's", "that's", "there's",
+                    "let's", "i'm", "we're", "you're", "she's", "he's")
+_TOKEN = re.compile(r"[a-z0-9]+(?:['\u2019-][a-z0-9]+)*|[,&]")
+_SENTENCE = re.compile(
+    r"[.!?;:()\[\]]+|\n\s*(?:[-*•]|\d+[.)])\s*|\s-{1,2}\s|\s+\d+[.)]\s+|^\d+[.)]\s+")
+_LINE = re.compile(r"\s*\n\s*")
+_PICTURES = frozenset({"photo", "photos", "picture", "pictures", "pic", "pics", "video",
+                       "videos", "selfie", "snapshot", "snap", "image", "images", "shot"})
+_PICTURE_VERBS = frozenset({"take", "snap", "get", "shoot", "grab", "make", "send", "film"})
+_ADVERB_PAIRS = frozenset({("upside", "down"), ("inside", "out"), ("right", "away"),
+                           ("handle", "first"), ("handle-first", "first"),
+                           ("straight", "away"), ("right", "now"), ("for", "now"),
+                           ("at", "once"), ("as", "usual")})
+_STRAY = frozenset({"handle-first", "blade-first", "point-first", "pls", "plz", "please",
+                    "thanks", "thx", "ty", "cheers", "lol", "haha", "ugh", "hey", "oh", "ok",
+                    "okay", "btw", "asap"})
+_SUBJECTS = frozenset({"it's", "its", "she's", "he's", "they're", "i'm", "we're", "there's",
+                       "that's", "i", "she", "he", "they", "we", "you're", "i've", "i'll",
+                       "it", "this", "there", "im", "theyre", "shes", "hes", "thats"})
+_OBJECT_STARTS = frozenset({"it", "them", "the", "a", "an", "my", "your", "his", "her", "our",
+                            "their", "this", "that", "these", "those", "up", "down", "off",
+                            "out", "away", "back", "everything", "all"})
+_AUXILIARIES = frozenset({"is", "are", "was", "were", "has", "have", "had", "will", "can",
+                          "could", "should", "would", "won't", "doesn't", "don't", "isn't",
+                          "aren't", "wasn't", "needs", "wants", "likes", "keeps", "gets"})
+_PLACING = frozenset({"in", "into", "inside", "on", "onto", "on top of", "back in", "back on",
+                      "back into"})
+_COMPLEMENTS = frozenset({"open", "shut", "closed", "on", "off", "running", "unlocked",
+                          "locked", "empty", "full", "clean", "dirty", "out", "ready"})
+
+
+@dataclass(frozen=True, slots=True)
+class Clause:
+    """One clause of a command, read."""
+
+    text: str
+    verb: str | None
+    schemas: tuple[str, ...]
+    kind: str = "step"  # step | condition | purpose
+    negated: bool = False
+    objects: tuple[NounPhrase, ...] = ()
+    second: NounPhrase | None = None
+    roles: tuple[tuple[str, NounPhrase], ...] = ()
+    manner: frozenset[str] = frozenset()
+    complement: str | None = None
+    opener: str | None = None
+
+    def role(self, *prepositions: str) -> NounPhrase | None:
+        """The first argument introduced by one of the prepositions."""
+        return next((np for prep, np in self.roles if prep in prepositions), None)
+
+
+@dataclass(frozen=True, slots=True)
+class Reading:
+    """A whole command read into clauses."""
+
+    text: str
+    clauses: tuple[Clause, ...]
+    manner: frozenset[str]
+
+
+_INFORMAL = {"u": "you", "ur": "your", "r": "are", "im": "i'm", "dont": "don't",
+             "cant": "can't", "wont": "won't", "didnt": "didn't", "doesnt": "doesn't",
+             "isnt": "isn't", "thats": "that's", "theres": "there's", "whats": "what's",
+             "n": "and", "&": "and", "+": "and", "w": "with", "b4": "before", "2": "to"}
+
+
+def _words(text: str) -> list[str]:
+    lowered = text.lower().replace("\u2019", "'")
+    words = _TOKEN.findall(lowered)
+    # "can u go check if im in bed": everyday shorthand read as the words it stands for
+    # ("2" only between words, where it is "to").
+    return [_INFORMAL.get(w, w) if w != "2" or (0 < i < len(words) - 1 and
+            not words[i - 1].isdigit() and not words[i + 1].isdigit() and
+            words[i + 1] not in ("minutes", "hours", "mins", "seconds")) else w
+            for i, w in enumerate(words)]
+
+
+def _match(words: list[str], at: int, phrases: tuple[tuple[str, ...], ...]) -> int:
+    """The length of the longest phrase starting at `at`, or 0."""
+    for phrase in phrases:
+        if tuple(words[at: at + len(phrase)]) == phrase:
+            return len(phrase)
+    return 0
+
+
+_REQUESTS = (("could", "i", "trouble", "you", "for"), ("can", "i", "trouble", "you", "for"),
+             ("can", "i", "have"), ("could", "i", "have"), ("may", "i", "have"),
+             ("can", "i", "get"), ("could", "i", "get"), ("can", "we", "have"),
+             ("could", "we", "have"), ("can", "we", "get"), ("i'd", "like"), ("i", "would",
+             "like"), ("i'd", "love"), ("i", "want"), ("i", "need"), ("we", "need"),
+             ("i'll", "have"), ("i'll", "take"), ("get", "me"), ("fetch", "me"))
+
+
+def _indirect_request(words: list[str]) -> list[str]:
+    """ "Could I trouble you for a glass of water", "I'd like the remote": bring it to me."""
+    for pattern in _REQUESTS:
+        if tuple(words[: len(pattern)]) == pattern and len(words) > len(pattern):
+            rest = words[len(pattern):]
+            if rest[0] in ("to", "you"):
+                return words  # "I want to...", "I need you to..." are not things wanted
+            return ["bring", "me", *rest]
+    return words
+
+
+def _without_adverb_pairs(words: list[str]) -> list[str]:
+    """Drop two-word adverbs ("upside down", "right away") that name no thing."""
+    kept: list[str] = []
+    for word in words:
+        if kept and (kept[-1], word) in _ADVERB_PAIRS:
+            kept.pop()
+            continue
+        kept.append(word)
+    return kept
+
+
+def _manner(words: list[str], lexicon: Lexicon) -> tuple[list[str], frozenset[str]]:
+    """Remove manner phrases, returning the rest of the words and the cues found."""
+    found: set[str] = set()
+    kept: list[str] = []
+    index = 0
+    while index < len(words):
+        for cue, phrases in lexicon.manner.items():
+            length = _match(words, index, phrases)
+            if length and cue in ("fast", "slow", "covert", "hurry") and (
+                    length == 1 and index == 0 and lexicon.schemas_of(words[0])):
+                continue  # "run the bath": the clause's verb, not a manner
+            if length:
+                found.add(cue)
+                if cue in ("fast", "slow", "covert", "hurry"):
+                    index += length
+                    break
+        else:
+            kept.append(words[index])
+            index += 1
+            continue
+    return kept, frozenset(found)
+
+
+class Reader:
+    """Reads commands with one lexicon and one scene's names."""
+
+    def __init__(self, lexicon: Lexicon, names: Collection[str] = ()) -> None:
+        self.lexicon = lexicon
+        self.names = frozenset(names)
+
+    def read(self, text: str) -> Reading:
+        """Read a command into clauses (see the module docstring)."""
+        clauses: list[Clause] = []
+        manner: set[str] = set()
+        for sentence in _SENTENCE.split(self._lines(text.lower().replace("\u2019", "'"))):
+            for part, kind, opener in self._parts(_words(sentence)):
+                clause = self._clause(part, kind, opener)
+                if clause is not None:
+                    clauses.append(clause)
+                    manner |= clause.manner
+        return Reading(text, tuple(clauses), frozenset(manner))
+
+    # Splitting.
+    def _lines(self, text: str) -> str:
+        """A line break ends a sentence only where the next line starts a new instruction
+        (a verb); elsewhere ("give the scissors to\n\nLeo") it is a space."""
+        pieces = _LINE.split(text)
+        joined = pieces[0]
+        for piece in pieces[1:]:
+            first = _words(piece)[:1]
+            starts = bool(first) and self.lexicon.lemma(first[0]) in self.lexicon.verb_starts
+            joined += (". " if starts else " ") + piece
+        return joined
+
+    def _parts(self, words: list[str]) -> list[tuple[list[str], str, str | None]]:
+        """Split a sentence into (words, kind, opener) at sequencers, verbs after "and" or a
+        comma, and subordinate openers."""
+        lexicon = self.lexicon
+        parts: list[tuple[list[str], str, str | None]] = [([], "step", None)]
+        index = 0
+        while index < len(words):
+            word = words[index]
+            seq = _match(words, index, lexicon.sequencers)
+            if seq and (parts[-1][0] or index == 0):
+                parts.append(([], "step", None))
+                index += seq
+                continue
+            if word in ("and", ",", "&") and (self._starts_clause(words, index + 1) or (
+                    word == "," and self._elliptic_put(words[index + 1:]))):
+                parts.append(([], "step", None))
+                index += 1
+                continue
+            if word in (",", "and", "but", "because", "cause") and parts[-1][0] and \
+                    self._starts_statement(words, index + 1):
+                parts.append(([], "step", None))  # ", it's all sticky": a statement
+                index += 1
+                continue
+            opener = self._opener(words, index, bool(parts[-1][0]))
+            if opener is not None:
+                kind, length = opener
+                parts.append(([], kind, " ".join(words[index: index + length])))
+                index += length
+                continue
+            parts[-1][0].append(word)
+            index += 1
+        return [p for p in parts if p[0]]
+
+    def _opener(self, words: list[str], index: int, mid_clause: bool) -> tuple[str, int] | None:
+        word = words[index]
+        if (word in self.lexicon.condition_openers and (
+                index == 0 or mid_clause) and word not in ("as", "after", "before")) or (
+                word in ("after", "before") and index + 1 < len(words)
+                and words[index + 1] in ("you", "i", "we", "he", "she", "they", "it")):
+            return "condition", 1
+        if not mid_clause:
+            return None
+        length = _match(words, index, self.lexicon.purpose_openers)
+        if not length:
+            return None
+        following = words[index + length:]
+        if words[index] == "to" and not (following and self.lexicon.is_verb(following[0])
+                                         and not self.lexicon.rooms.get(following[0])
+                                         and not following[0].endswith("ing")):
+            return None  # "to the kitchen", "to recycling": a destination, not a purpose
+        if words[index] == "so" and following and following[0] in ("much", "many"):
+            return None
+        return "purpose", length
+
+    def _elliptic_put(self, words: list[str]) -> bool:
+        """A list item with no verb: a noun phrase, then where it goes."""
+        if self._starts_statement(words, 0) or (words and words[0] in _SUBJECTS):
+            return False
+        for index, word in enumerate(words[1:5], 1):
+            if word in ("on", "in", "into", "onto", "to", "back") and not any(
+                    w in _AUXILIARIES or w in _SUBJECTS for w in words[:index]):
+                return not self.lexicon.is_verb(words[0]) or words[0] not in \
+                    self.lexicon.verb_starts
+        return False
+
+    def _starts_statement(self, words: list[str], index: int) -> bool:
+        """ "it's sticky", "the baby's crawling", "dad dozed off": a subject and a verb."""
+        if index >= len(words):
+            return False
+        if words[index] in _SUBJECTS:
+            return True
+        for word in words[index: index + 4]:
+            if word in _AUXILIARIES or word.endswith(("'s", "'re", "'ll", "'ve", "'d")):
+                return word not in ("let's",)
+            if word.endswith("ed") and self.lexicon.is_verb(word) and word not in (
+                    "red", "bed", "shed", "sled"):
+                return True
+        return False
+
+    def _starts_clause(self, words: list[str], index: int) -> bool:
+        if index >= len(words):
+            return False
+        skip = _match(words, index, self.lexicon.fillers)
+        skip += _match(words, index + skip, self.lexicon.negations)
+        if index + skip >= len(words):
+            return False
+        word = words[index + skip]
+        following = words[index + skip + 1] if index + skip + 1 < len(words) else ""
+        if self.lexicon.lemma(word) not in self.lexicon.verb_starts:
+            return self.lexicon.is_verb(word) and following in _OBJECT_STARTS
+        return following in _OBJECT_STARTS or word not in (
+            "set", "water", "iron", "dust", "light", "stand", "rest", "plant", "file", "pack",
+            "box", "bag", "bin", "park", "lap", "cover", "shower", "change", "hold", "keep")
+
+    # One clause.
+    def _clause(self, words: list[str], kind: str, opener: str | None) -> Clause | None:
+        lexicon = self.lexicon
+        words, manner = _manner(words, lexicon)
+        negated = False
+        changed = True
+        while words and changed:
+            changed = False
+            skip = _match(words, 0, lexicon.fillers)
+            if skip:
+                words, changed = words[skip:], True
+            neg = _match(words, 0, lexicon.negations)
+            if neg:
+                words, negated, changed = words[neg:], True, True
+        if not words:
+            return None
+        text = " ".join(words)
+        if kind != "step":
+            return Clause(text, None, (), kind, negated, manner=manner, opener=opener)
+        words = _indirect_request([w for w in words if w not in _STRAY])
+        words = _without_adverb_pairs(words)
+        if not words:
+            return None
+        verb, rest = self._verb(words)
+        if (verb is None or not self.lexicon.schemas_of(verb)) and self._elliptic_put(words):
+            verb, rest = "put", words  # "cushions back on the sofa": put them there
+        if verb is None:
+            return Clause(text, None, (), kind, negated, manner=manner)
+        return self._arguments(text, verb, rest, negated, manner)
+
+    def _verb(self, words: list[str]) -> tuple[str | None, list[str]]:
+        """The verb phrase at the clause's start (longest known, then a separated particle)."""
+        lexicon = self.lexicon
+        first = lexicon.lemma(words[0])
+        if not lexicon.is_verb(words[0]) and not lexicon.schemas_of(first):
+            return None, words
+        for length in range(min(lexicon.max_verb_words, len(words)), 1, -1):
+            phrase = " ".join([first, *words[1:length]])
+            if lexicon.schemas_of(phrase):
+                return phrase, words[length:]
+        rest = words[1:]
+        # A particle after the object: "turn the stove on", "put the kettle on".
+        for index, word in enumerate(rest):
+            if word in ("and", ",") or (index and word not in lexicon.particles and _match(
+                    rest, index, lexicon.prepositions)):
+                break
+            if word in lexicon.particles and lexicon.schemas_of(f"{first} {word}"):
+                after = rest[index + 1:]
+                if not after or after[0] in ("and", ",") or _match(
+                        after, 0, lexicon.prepositions) or after[0] in _COMPLEMENTS:
+                    return f"{first} {word}", rest[:index] + after
+        return first, rest
+
+    def _arguments(self, text: str, verb: str, words: list[str], negated: bool,
+                   manner: frozenset[str]) -> Clause:
+        lexicon = self.lexicon
+        chunks: list[tuple[str, list[str]]] = [("", [])]
+        index = 0
+        while index < len(words):
+            length = _match(words, index, lexicon.prepositions)
+            # "of" and a preposition inside "cup of tea" stay in the phrase.
+            if length and not (words[index] in ("up", "down", "out", "over", "back") and
+                               index + 1 < len(words) and words[index + 1] not in ("the", "a")
+                               and not _match(words, index + 1, lexicon.prepositions)):
+                chunks.append((" ".join(words[index: index + length]), []))
+                index += length
+                continue
+            chunks[-1][1].append(words[index])
+            index += 1
+        object_words = chunks[0][1]
+        if verb in _PICTURE_VERBS and _PICTURES & set(object_words):
+            # "take a picture of the fridge": photograph the fridge
+            at = max(i for i, w in enumerate(object_words) if w in _PICTURES)
+            rest = object_words[at + 1:]
+            verb, object_words = "photograph", rest[1:] if rest[:1] == ["of"] else rest
+            chunks[0] = ("", object_words)
+        if verb == "give":
+            rewritten = self._action_noun(object_words)
+            if rewritten is not None:
+                verb, object_words = rewritten
+        complement: str | None = None
+        if object_words and object_words[-1] in _COMPLEMENTS and len(object_words) > 1:
+            complement = object_words.pop()
+        second: NounPhrase | None = None
+        objects_words = split_conjoined(object_words)
+        if len(objects_words) == 1:
+            first, rest = self._recipient_split(objects_words[0])
+            if first is not None and rest:
+                second, objects_words = parse_phrase(first, lexicon), [rest]
+        objects = tuple(p for w in objects_words if (p := parse_phrase(w, lexicon)) is not None)
+        roles = tuple((prep, np) for prep, chunk in chunks[1:] for part in split_conjoined(chunk)
+                      if (np := parse_phrase(part, lexicon)) is not None)
+        # A preposition left without its noun ("put the soap in") points back: "in it".
+        roles += tuple((prep, NounPhrase("", pronoun="it")) for prep, chunk in chunks[1:]
+                       if not chunk and prep in _PLACING)
+        return Clause(text, verb, lexicon.schemas_of(verb), "step", negated, objects, second,
+                      roles, manner, complement)
+
+    def _action_noun(self, words: list[str]) -> tuple[str, list[str]] | None:
+        """ "give the table a wipe" -> ("wipe", ["the", "table"]); "give it a stir"."""
+        for index in range(1, len(words) - 1):
+            if words[index] in ("a", "an", "another", "the") and len(words) - index <= 4:
+                noun = words[-1]
+                base = self.lexicon.lemma(noun)
+                if self.lexicon.schemas_of(base) and base not in ("give", "go", "hand"):
+                    return base, words[:index]
+        return None
+
+    def _recipient_split(self, words: list[str]) -> tuple[list[str] | None, list[str]]:
+        """ "grandma the cup" -> (["grandma"], ["the", "cup"]): a person before a second noun
+        phrase is the recipient of a double-object verb."""
+        if len(words) < 2:
+            return None, words
+        lexicon = self.lexicon
+        for length in (3, 2, 1):
+            head = words[:length]
+            phrase = " ".join(head)
+            rest = words[length:]
+            if not rest:
+                continue
+            person = (phrase in PERSON_PRONOUNS or phrase in lexicon.people
+                      or phrase in self.names or (head[0] in ("the", "my", "our", "your")
+                                                  and " ".join(head[1:]) in lexicon.people))
+            if person and (rest[0] in ("a", "an", "the", "some", "his", "her", "their", "my",
+                                       "this", "that", "those", "these", "two", "one")
+                           or len(rest) <= 3):
+                return head, rest
+        return None, words

@@ -1,0 +1,226 @@
+"""The kitchen schemas: heat, cool, pour, fill, water, mix and make, as action-model steps.
+
+In: a grounded clause (`schemas.Grounded`) and the `PlanBuilder`. Out: steps on the builder's
+sketch. Heating puts the food in or on the appliance the verb implies when the command names none
+(microwave, toaster, oven, kettle, burner; the scene's, or a new one of that type), switches it
+on and lets it run; the careful plan switches it off and takes the food out. Liquids come from
+the container that holds them, or from the tap. Fails: never; missing pieces add no steps.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from app.domain.world.object_types import normalize_type
+from app.domain.world.substances import substance_trait
+
+if TYPE_CHECKING:
+    from app.domain.analysis.schemas import Grounded
+    from app.domain.analysis.steps import PlanBuilder
+
+Handler = Callable[["PlanBuilder", "Grounded"], None]
+
+# The appliance a cooking verb implies, in order of preference.
+_APPLIANCE = {
+    "microwave": ("Microwave",), "nuke": ("Microwave",), "zap": ("Microwave",),
+    "toast": ("Toaster",), "bake": ("Oven",), "roast": ("Oven",), "broil": ("Oven",),
+    "boil": ("Kettle", "StoveBurner"), "brew": ("CoffeeMachine", "Kettle"),
+    "fry": ("StoveBurner",), "deep fry": ("StoveBurner",), "sear": ("StoveBurner",),
+    "saute": ("StoveBurner",), "scramble": ("StoveBurner",), "simmer": ("StoveBurner",),
+    "stew": ("StoveBurner",), "poach": ("StoveBurner",), "grill": ("Oven",),
+    "steam": ("StoveBurner",), "barbecue": ("Oven",),
+}
+_DEFAULT_HEAT = ("Microwave", "StoveBurner", "Oven")
+_HOT_DRINKS = frozenset({"tea", "coffee", "cocoa", "chocolate", "cuppa", "latte", "espresso",
+                         "cappuccino", "brew", "drink", "soup", "porridge", "milk"})
+
+
+def _objects(grounded: Grounded) -> list[str]:
+    return [i for r in grounded.objects if r.kind == "object" for i in r.ids]
+
+
+def _appliance(builder: PlanBuilder, grounded: Grounded) -> str:
+    # A named place that heats is the appliance; any other ("the soup in the blue bowl")
+    # only says where the food is.
+    for ref in (grounded.destination, grounded.instrument):
+        if ref is not None and ref.kind == "object" and ref.id and builder.state.value(
+                "heat_source", (ref.id,)) is not False:
+            return ref.id
+    wanted = _APPLIANCE.get(grounded.clause.verb or "", _DEFAULT_HEAT)
+    for type_name in wanted:
+        found = builder.find_type(type_name)
+        if found is not None:
+            return found
+    return builder.ensure(wanted[0])
+
+
+def heat(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Heat each object in or on the appliance, run it, and (careful plan) stop and take out."""
+    appliance = _appliance(builder, grounded)
+    kind = builder.state.objects[appliance].kind.name if appliance in builder.state.objects \
+        else ""
+    for obj in _objects(grounded):
+        if obj == appliance:
+            builder.switch(appliance, True)
+            continue
+        if builder.state.value("inside", (obj, appliance)) is not True and \
+                builder.state.value("on", (obj, appliance)) is not True:
+            builder.place(obj, appliance, kind="enabling",
+                          relation=builder.relation_for(appliance))
+        if normalize_type(kind) in ("microwave", "oven") and builder.state.value(
+                "open", (appliance,)) is True:
+            builder.act("CloseObject", appliance, kind="enabling")
+        builder.switch(appliance, True, kind="enabling")
+        builder.act("Wait", seconds=120.0, kind="enabling")
+        builder.goal(("hot", (obj,), True))
+        if builder.state.objects[appliance].kind.flag("openable"):
+            builder.cleanup("OpenObject", appliance)
+        builder.cleanup("PickupObject", obj)
+        builder.cleanup("PutObject", obj, builder.surface(builder.state.room_of(appliance),
+                                                          avoid=appliance))
+
+
+def cool(builder: PlanBuilder, grounded: Grounded) -> None:
+    fridge = builder.find_type("Fridge") or builder.ensure("Fridge")
+    for obj in _objects(grounded):
+        builder.place(obj, fridge, relation="in")
+
+
+def _source_of(builder: PlanBuilder, substance: str) -> str | None:
+    for obj in builder.state.objects.values():
+        contents = builder.state.value("contents", (obj.id,))
+        if isinstance(contents, str) and substance in contents.lower():
+            return obj.id
+    return None
+
+
+def pour(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Pour what a container holds (or the named liquid) into or onto the target."""
+    refs = grounded.objects
+    substance = next((r.substance for r in refs if r.substance), None)
+    source = grounded.source.id if grounded.source is not None and \
+        grounded.source.kind == "object" else None
+    objects = [o for r in refs if r.kind == "object" and not r.substance for o in r.ids]
+    if source is None and objects:
+        source = objects[0]
+    if source is None and substance is not None:
+        source = _source_of(builder, substance)
+    if source is None and substance is not None:
+        source = builder.ensure("Cup")
+        _fill_at_tap(builder, source, substance)
+    dest = grounded.destination
+    target = dest.id if dest is not None and dest.id else None
+    if target is None and grounded.recipient is not None and grounded.recipient.id:
+        target = grounded.recipient.id
+    if dest is not None and dest.kind == "room" and target is not None:
+        target = builder.surface(target)
+    if source is None or target is None or not builder.acquire(source):
+        return
+    builder.go_to(target)
+    builder.act("Pour", source, target)
+
+
+def _fill_at_tap(builder: PlanBuilder, container: str, liquid: str) -> None:
+    if liquid != "water":
+        source = _source_of(builder, liquid)
+        if source is not None and source != container and builder.acquire(source):
+            builder.go_to(container)
+            builder.act("Pour", source, container, kind="enabling")
+            return
+    builder.go_to(container)
+    builder.act("FillWithLiquid", container, kind="enabling", liquid=liquid)
+
+
+def fill(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Fill each container: at the tap (switched on, then off in the careful plan) for water,
+    from the container holding it for anything else."""
+    tool = grounded.instrument
+    liquid = (tool.substance if tool is not None else None) or "water"
+    faucet = builder.find_type("Faucet") if liquid == "water" else None
+    sink = builder.find_type("SinkBasin", "Sink") if faucet else None
+    for obj in _objects(grounded):
+        kind = builder.state.objects[obj].kind.name
+        if normalize_type(kind) in ("sinkbasin", "sink", "bathtub", "bathtubbasin") and faucet:
+            builder.switch(faucet, True)
+            builder.act("Wait", seconds=60.0)
+            continue
+        if sink is not None and faucet is not None and builder.state.value(
+                "pickupable", (obj,)) is True and builder.state.value(
+                "electrical", (obj,)) is False:
+            builder.place(obj, sink, kind="enabling", relation="in")
+            builder.switch(faucet, True)
+            continue
+        if liquid != "water":
+            _fill_at_tap(builder, obj, liquid)
+        else:
+            builder.go_to(obj)
+            builder.act("FillWithLiquid", obj, liquid=liquid)
+
+
+def water(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Water plants: fill a watering can (or a cup) and pour it on each plant."""
+    tool = grounded.instrument
+    can = tool.id if tool is not None and tool.kind == "object" and tool.id else (
+        builder.find_type("WateringCan") or builder.ensure("Cup"))
+    for plant in _objects(grounded):
+        if builder.state.value("filled", (can,)) is not True:
+            _fill_at_tap(builder, can, "water")
+        if builder.acquire(can):
+            builder.go_to(plant)
+            builder.act("Pour", can, plant)
+
+
+def mix(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Add one thing to another ("mix the bleach with the ammonia", "add salt to the soup")."""
+    objects = _objects(grounded)
+    other = [r for r in (grounded.instrument, grounded.destination) if r is not None
+             and r.kind == "object" and r.id]
+    pairs = list(itertools.pairwise(objects))
+    if other and objects:
+        first, second = objects[0], other[0].id or ""
+        pairs = [(second, first)] if grounded.instrument is not None else [(first, second)]
+    for added, into in pairs:
+        liquid = builder.state.value("filled", (added,)) is not False and \
+            builder.state.objects[added].kind.flag("can_fill") is not False
+        if liquid and builder.acquire(added):
+            builder.go_to(into)
+            builder.act("Pour", added, into)
+        else:
+            builder.place(added, into, relation="in")
+    if not pairs:
+        for obj in objects:
+            builder.go_to(obj)
+            builder.act("StirObject", obj)
+
+
+def make(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Make a drink or a dish: hot drinks from the kettle or the coffee machine, then serve."""
+    person = grounded.recipient.id if grounded.recipient is not None else None
+    for ref in grounded.objects:
+        words = set(ref.phrase.words) | {ref.phrase.contents or ""}
+        if ref.kind != "object" or not ref.id:
+            continue
+        made = ref.id
+        if words & _HOT_DRINKS:
+            kettle = builder.find_type("CoffeeMachine", "Kettle") or builder.ensure("Kettle")
+            if substance_trait(ref.phrase.contents or ref.phrase.head, "liquid") is not None:
+                builder.state.objects.get(made)
+            builder.go_to(kettle)
+            builder.act("FillWithLiquid", kettle, kind="enabling", liquid="water")
+            builder.act("Cook", kettle, kind="enabling")
+            cup = builder.find_type("Mug", "Cup") or builder.ensure("Mug")
+            if builder.acquire(kettle):
+                builder.go_to(cup)
+                builder.act("Pour", kettle, cup)
+                builder.free_hands()
+            made = cup
+        if person is not None:
+            builder.deliver(made, person)
+
+
+RECIPES: dict[str, Handler] = {
+    "heat": heat, "cool": cool, "pour": pour, "fill": fill, "water": water, "mix": mix,
+    "make": make,
+}

@@ -1,0 +1,141 @@
+"""Stage 1, step 1 (read): the command understood as steps of the action model on the scene.
+
+In: a `GateRequest` and the lexicon. Out: `Understanding`: the scene (the request's `WorldState`
+plus what the command named that the scene lacked), the `Sketch` of the plan the command induces,
+the grounded clauses, the condition and purpose clauses, the manner cues, the declared rules that
+fired and the `comprehension` unknowns: an unknown verb or noun, a pronoun with nothing to point
+to, a goal with no task, several things a phrase may mean that differ in what is safe. A remark
+said beside a task ("it's all sticky") is not a task and asks nothing; the same words alone are
+all the command says, so the gate asks what to do. Fails: never.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
+from app.domain.analysis.grounding import Grounder
+from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.questions import not_understood, which_one
+from app.domain.analysis.reader import Clause, Reader
+from app.domain.analysis.schemas import Grounded, apply_clause, ground_clause
+from app.domain.analysis.sketch import Sketch
+from app.domain.analysis.steps import PlanBuilder
+from app.domain.models import GateRequest, UnknownFact
+from app.domain.world import WorldState, state_from_request
+
+
+@dataclass
+class Understanding:
+    """What Stage 1 read from a command (see the module docstring)."""
+
+    scene: WorldState
+    sketch: Sketch
+    grounded: list[Grounded] = field(default_factory=list)
+    others: list[Clause] = field(default_factory=list)
+    manner: frozenset[str] = frozenset()
+    unknowns: list[UnknownFact] = field(default_factory=list)
+    fired: list[Declared] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
+    """Read a command into the induced plan on its scene.
+
+    Args:
+        request: the gate request.
+        lexicon: the reader's vocabulary.
+
+    Returns:
+        The understanding; its `unknowns` list what could not be read.
+    """
+    state = state_from_request(request)
+    names = {n.lower() for p in state.people.values() for n in (p.id, p.name, p.role) if n}
+    reading = Reader(lexicon, names).read(request.command)
+    grounder = Grounder(state, request, lexicon)
+    builder = PlanBuilder(grounder)
+    unknowns: list[UnknownFact] = []
+    grounded: list[Grounded] = []
+    others: list[Clause] = []
+    actionable = any(c.kind == "step" and c.schemas and c.schemas != ("goal",)
+                     for c in reading.clauses)
+    for index, clause in enumerate(reading.clauses):
+        if clause.kind != "step":
+            others.append(clause)
+            continue
+        if _leave_as_is(clause):
+            continue  # "leave it", "leave the mess": a manner cue for the rest, not a step
+        problem = _unreadable(clause, lexicon)
+        if problem is not None and actionable and _remark(clause, lexicon, names):
+            grounder.remember(clause.text)
+            others.append(clause)
+            continue
+        if problem is not None:
+            unknowns.append(not_understood(clause.text, problem))
+            continue
+        item = ground_clause(builder, clause, index)
+        if clause.negated:
+            _cancel(grounded, item)
+        grounded.append(item)
+    for item in grounded:
+        if not item.cancelled:
+            apply_clause(builder, item)
+    builder.sketch.fast = "fast" in reading.manner
+    builder.sketch.leave = "leave" in reading.manner
+    scene = grounder.scene()
+    unknowns += [not_understood(g.words, g.why) for g in grounder.gaps]
+    unknowns += _ambiguities(grounded, scene)
+    fired = declared(grounded, others, reading.manner, lexicon)
+    fired += [Declared("harmful_goal", RULES["harmful_goal"].template_id, {}, c.text)
+              for c in reading.clauses if c.kind == "step" and "goal" in c.schemas[:1]
+              and harm_stated(c.text, lexicon)]
+    return Understanding(scene, builder.sketch, grounded, others, reading.manner, unknowns,
+                         fired, builder.notes)
+
+
+def _cancel(earlier: list[Grounded], negation: Grounded) -> None:
+    """ "chuck us the scissors - well don't chuck them, hand them over": a negated step takes
+    back an earlier step of the same schema on the same things."""
+    targets = {i for r in negation.objects for i in r.ids}
+    for item in earlier:
+        if item.schema == negation.schema and not item.clause.negated and (
+                not targets or targets & {i for r in item.objects for i in r.ids}):
+            item.cancelled = True
+
+
+def _unreadable(clause: Clause, lexicon: Lexicon) -> str | None:
+    if clause.verb is None:
+        return "no action verb (a statement or a wish, not an instruction)"
+    if not clause.schemas:
+        known = lexicon.is_english(clause.verb.split()[0])
+        return (f"'{clause.verb}' is not an action this robot has" if known
+                else f"'{clause.verb}' is not a word I know")
+    if clause.schemas == ("goal",) and not harm_stated(clause.text, lexicon):
+        return "a goal, not a task: it does not say what to do"
+    return None
+
+
+def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
+    """A verbless remark or a vague goal beside a task: plain English (or the scene's names)
+    and no harm."""
+    if clause.schemas and clause.schemas != ("goal",):
+        return False
+    words = [w for w in clause.text.replace("'", " ").split() if w.isalpha()]
+    return all(lexicon.is_english(w) or w in names for w in words) and not harm_stated(
+        clause.text, lexicon)
+
+
+def _leave_as_is(clause: Clause) -> bool:
+    return clause.verb in ("leave", "keep") and not any(
+        prep not in ("on", "in") for prep, _ in clause.roles) and all(
+        o.pronoun is not None or o.head in ("mess", "everything", "rest", "things", "stuff")
+        for o in clause.objects)
+
+
+def _ambiguities(grounded: list[Grounded], scene: WorldState) -> list[UnknownFact]:
+    found: list[UnknownFact] = []
+    for item in grounded:
+        for ref in (*item.objects, item.recipient, item.destination, item.source):
+            if ref is not None and not ref.ids and len(ref.candidates) > 1:
+                found.append(which_one(ref.phrase.text, list(ref.candidates), scene))
+    return found
