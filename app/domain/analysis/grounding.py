@@ -83,6 +83,7 @@ class Grounder:
         self.stated: dict[str, dict[str, object]] = {}
         """Facts the command's words state about scene objects ("the top shelf")."""
         self.last_object: tuple[str, ...] = ()
+        self.last_single: tuple[str, ...] = ()
         self.last_place: Referent | None = None
         self.last_person: dict[str | None, str] = {}
         self._request = request
@@ -142,14 +143,17 @@ class Grounder:
         if phrase.pronoun in ("it", "this", "that", "these", "those", "one", "ones") or (
                 phrase.pronoun == "them" and self.last_object):
             if self.last_object:
-                return Referent(phrase, "object", self.last_object)
+                singular_pronoun = phrase.pronoun in ("it", "this", "that", "one")
+                pointed = self.last_single if singular_pronoun and self.last_single else \
+                    self.last_object
+                return Referent(phrase, "object", pointed)
             self.gaps.append(Gap(phrase.text, "nothing named earlier for it to point to"))
             return Referent(phrase, "none")
         if not place:
             return self._any(phrase, place)
-        remembered = self.last_object
+        remembered = self.last_object, self.last_single
         found = self._any(phrase, place)
-        self.last_object = remembered
+        self.last_object, self.last_single = remembered
         if found.ids:
             self.last_place = found
         return found
@@ -331,7 +335,7 @@ class Grounder:
                 return Referent(phrase, "object", (), tuple(ids))
             else:
                 chosen = (ids[0],)
-            self.last_object = chosen
+            self.last_object = self.last_single = chosen
             self._annotate(chosen, phrase)
             return Referent(phrase, "object", chosen, tuple(ids[:MAX_GROUP]))
         return self._new_object(phrase)
@@ -342,7 +346,7 @@ class Grounder:
         words = _words_of(text)
         for obj in self.objects.values():
             if words & _words_of(obj.type, obj.name) - _GENERIC:
-                self.last_object = (obj.id,)
+                self.last_object = self.last_single = (obj.id,)
         for person_id, names in self._names.items():
             if words & names - _GENERIC:
                 self._remember_person(Referent(NounPhrase(text), "person", (person_id,)))
@@ -377,7 +381,7 @@ class Grounder:
         object_id = f"new_{normalize_type(phrase.phrase) or 'object'}"
         self.objects[object_id] = ObjectState(id=object_id, type=kind,
                                               properties=frozen_mapping(properties))
-        self.last_object = (object_id,)
+        self.last_object = self.last_single = (object_id,)
         self._annotate((object_id,), phrase)
         return Referent(phrase, "object", (object_id,), new=True,
                         substance=head if liquid else None)

@@ -84,6 +84,22 @@ def _strip_determiners(words: list[str], lexicon: Lexicon) -> tuple[list[str], f
     return words, quantity, every, possessor
 
 
+_TIME_UNITS = frozenset({"minute", "minutes", "min", "mins", "hour", "hours", "second",
+                        "seconds", "day", "days", "night", "nights", "morning", "evening",
+                        "week", "weeks", "while", "time"})
+
+
+def _without_time(words: list[str]) -> list[str]:
+    """ "her every ten minutes" -> "her": how often or how long is no part of what is named."""
+    for index, word in enumerate(words[1:], 1):
+        if word in ("every", "each", "for", "until", "till") and any(
+                w in _TIME_UNITS for w in words[index + 1: index + 4]):
+            return words[:index]
+        if word in ("overnight", "tonight", "today", "tomorrow"):
+            return words[:index]
+    return words
+
+
 def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
     """Read one noun phrase.
 
@@ -95,6 +111,7 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
         The phrase, or None for an empty one.
     """
     text = " ".join(words)
+    words = _without_time(words)
     while len(words) > 1 and words[-1] in _TRAILING:
         words = words[:-1]
     if len(words) == 2 and words[1] == "else" and words[0] in OBJECT_PRONOUNS | {

@@ -51,7 +51,9 @@ _OBJECT_STARTS = frozenset({"it", "them", "the", "a", "an", "my", "your", "his",
                             "out", "away", "back", "everything", "all"})
 _AUXILIARIES = frozenset({"is", "are", "was", "were", "has", "have", "had", "will", "can",
                           "could", "should", "would", "won't", "doesn't", "don't", "isn't",
-                          "aren't", "wasn't", "needs", "wants", "likes", "keeps", "gets"})
+                          "aren't", "wasn't", "needs", "wants", "likes", "keeps", "gets",
+                          "love", "loves", "like", "hate", "hates", "enjoy", "enjoys", "know",
+                          "knows", "think", "thinks", "want", "need", "seem", "seems"})
 _PLACING = frozenset({"in", "into", "inside", "on", "onto", "on top of", "back in", "back on",
                       "back into"})
 _COMPLEMENTS = frozenset({"open", "shut", "closed", "on", "off", "running", "unlocked",
@@ -130,6 +132,11 @@ def _indirect_request(words: list[str]) -> list[str]:
                 return words  # "I want to...", "I need you to..." are not things wanted
             return ["bring", "me", *rest]
     return words
+
+
+def schemas_go(lexicon: Lexicon, verb: str) -> bool:
+    """Whether the verb moves the robot somewhere ("do laps of the lounge")."""
+    return bool(lexicon.schemas_of(verb)) and lexicon.schemas_of(verb)[0] == "go"
 
 
 def _without_adverb_pairs(words: list[str]) -> list[str]:
@@ -361,6 +368,11 @@ class Reader:
             chunks[-1][1].append(words[index])
             index += 1
         object_words = chunks[0][1]
+        if "of" in object_words[1:3] and schemas_go(self.lexicon, verb):
+            at = object_words.index("of")
+            chunks.insert(1, ("to", object_words[at + 1:]))
+            object_words = object_words[:at]
+            chunks[0] = ("", object_words)
         if verb in _PICTURE_VERBS and _PICTURES & set(object_words):
             # "take a picture of the fridge": photograph the fridge
             at = max(i for i, w in enumerate(object_words) if w in _PICTURES)

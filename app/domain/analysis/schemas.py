@@ -84,7 +84,8 @@ SETTINGS = frozenset({
     "high", "max", "maximum", "minimum", "full", "half", "thin", "thick", "warm", "hot", "cold",
     "lukewarm", "gently", "slowly", "quickly", "rare", "done", "crispy", "golden", "soft",
     "brown", "times", "time", "once", "twice", "tonight", "today", "tomorrow", "morning",
-    "evening", "afternoon", "night", "later", "now", "first", "last", "way", "go"})
+    "evening", "afternoon", "night", "later", "now", "first", "last", "way", "go",
+    "overnight", "upside", "laps", "lap", "circuits"})
 
 
 VOCATIVES = frozenset({"love", "dear", "honey", "hon", "sweetie", "darling", "mate", "buddy",
@@ -100,7 +101,12 @@ def _setting(np: NounPhrase) -> bool:
 def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     """Ground a clause's words and choose its schema (no steps yet)."""
     g = builder.grounder
+    before, before_single = g.last_object, g.last_single
     objects = [g.any(np) for np in clause.objects if not _setting(np)]
+    own = {i for r in objects for i in r.ids}
+    if before and own and not own & set(before):
+        g.last_object, g.last_single = before, before_single  # "pour water on it": not the water
+        g.last_place = None
     recipient = g.person(clause.second) if clause.second is not None else None
     grounded = Grounded(clause, index, None, objects, recipient)
     # Of several places, the last is where things go; "the chili in the dish into the
@@ -130,6 +136,10 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             if found.kind == "person" and prep in ("to", "over to") and recipient is None:
                 grounded.recipient = found
             grounded.destination = found
+    if own:
+        # "it" after "a cup of tea, milk and two sugars" is the first thing named; "them" is all
+        g.last_object = tuple(dict.fromkeys(i for r in objects for i in r.ids))
+        g.last_single = next((r.ids for r in objects if r.ids), g.last_object)
     _contents_of_containers(grounded, clause)
     first_is_person = bool(objects) and objects[0].kind == "person"
     grounded.schema = _choose(clause, first_is_person, grounded.destination is not None)

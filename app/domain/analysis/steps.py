@@ -24,6 +24,7 @@ from app.domain.world import ROBOT_ID, Action, ObjectState, WorldState, step
 from app.domain.world.entities import frozen_mapping
 from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
 
+_ROLLING = ("cart", "trolley", "wheelchair", "pram", "stroller", "wheelie", "buggy")
 _SURFACES = ("CounterTop", "DiningTable", "Table", "CoffeeTable", "SideTable", "Desk",
              "Dresser", "Shelf", "TVStand", "Ottoman", "Chair", "Sofa", "Bed")
 _CLOSED_STORAGE = frozenset({"fridge", "cabinet", "drawer", "microwave", "oven", "dishwasher",
@@ -197,9 +198,7 @@ class PlanBuilder:
         """Go to an object, open what it is in, free the gripper and pick it up."""
         if self.holding() == object_id:
             return True
-        if self.state.entity_type(object_id) != "object" or self.state.value(
-                "pickupable", (object_id,)) is False:
-            self.notes.append(f"{object_id} cannot be picked up")
+        if self.state.entity_type(object_id) != "object":
             return False
         holder = self.state.holder_of(object_id)
         container = self.container_of(object_id)
@@ -215,11 +214,12 @@ class PlanBuilder:
     def rolls(self, object_id: str) -> bool:
         """A thing moved by pushing (a cart, a trolley, a wheelchair), not by carrying."""
         state = self.state
-        return state.entity_type(object_id) == "object" and state.value(
-            "pickupable", (object_id,)) is not True and (
-            state.objects[object_id].kind.flag("moveable") is True
-            or any(w in object_id.lower() for w in ("cart", "trolley", "wheelchair", "pram",
-                                                     "stroller", "bin")))
+        if state.entity_type(object_id) != "object":
+            return False
+        obj = state.objects[object_id]
+        words = f"{obj.id} {obj.type} {obj.name or ''}".lower()
+        return state.value("pickupable", (object_id,)) is not True and any(
+            w in words for w in _ROLLING)
 
     def push_to(self, object_id: str, target: str) -> None:
         """Push a rolling thing next to a target (a person, an object or a room)."""
