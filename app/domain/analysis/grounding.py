@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 
-from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.lexicon import Lexicon, PersonWord
 from app.domain.analysis.phrases import NounPhrase
 from app.domain.formula.facts import Unknown
 from app.domain.models import GateRequest
@@ -59,6 +59,9 @@ class Gap:
 
     words: str
     why: str
+
+
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
 
 def _words_of(*texts: str | None) -> set[str]:
@@ -226,12 +229,21 @@ class Grounder:
                        and p.properties.get("age_group") == info.age_group
                        and info.role in ("baby", "toddler", "child", "teen")]
             if not matches:
+                matches = [p.id for p in self.people.values() if self._same_kind(p.role, info)]
+            if not matches:
                 return None
         ids = tuple(matches[:MAX_GROUP]) if (phrase.every or (phrase.head.endswith("s")
                                              and len(matches) > 1)) else tuple(matches[:1])
         if len(matches) > 1 and len(ids) == 1 and not phrase.every:
             return Referent(phrase, "person", (), tuple(matches))
         return self._remember_person(Referent(phrase, "person", ids))
+
+    def _same_kind(self, role: str | None, wanted: PersonWord) -> bool:
+        """Whether a scene role is another word for the same kind of person ("grandad" and
+        a "grandfather", never a "grandmother")."""
+        info = self.lexicon.people.get((role or "").lower())
+        return info is not None and info.role == wanted.role and not info.is_user and (
+            info.gender is None or wanted.gender is None or info.gender == wanted.gender)
 
     def _gender(self, person_id: str) -> str | None:
         person = self.people[person_id]
@@ -265,6 +277,9 @@ class Grounder:
     def _object_matches(self, phrase: NounPhrase) -> list[str]:
         if not phrase.head:
             return []
+        named = [i for i in self.objects if "_" in i and i.lower() in phrase.text.split()]
+        if named:
+            return named  # "the high cupboard cabinet_high_1": an id the caller wrote out
         wanted = _words_of(phrase.phrase)
         head = singular(phrase.head)
         concept = concept_of(phrase.phrase)
@@ -345,7 +360,10 @@ class Grounder:
         never new ones, so a later pronoun can point to them."""
         words = _words_of(text)
         for obj in self.objects.values():
-            if words & _words_of(obj.type, obj.name) - _GENERIC:
+            type_head = singular(_CAMEL.sub(" ", obj.type).split()[-1].lower()) if obj.type \
+                else ""
+            if words & _words_of(obj.type, obj.name) - _GENERIC or (
+                    type_head and type_head not in _GENERIC and type_head in words):
                 self.last_object = self.last_single = (obj.id,)
         for person_id, names in self._names.items():
             if words & names - _GENERIC:

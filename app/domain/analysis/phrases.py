@@ -24,7 +24,7 @@ _TRAILING = frozenset({"downstairs", "upstairs", "here", "there", "now", "too", 
                        "everywhere", "anyway", "outside", "inside", "please", "today",
                        "tonight", "first", "properly", "quickly", "later", "instead"})
 _PARTS = frozenset({"end", "side", "edge", "middle", "corner", "back", "front", "bottom", "rest",
-                    "half", "centre", "center", "inside", "outside", "surface", "remainder"})
+                    "top", "half", "centre", "center", "inside", "outside", "surface", "remainder"})
 # "a glass of water": the container holds the substance; "a slice of cake": the part is food.
 _PARTITIVES = frozenset({"slice", "slices", "piece", "pieces", "bit", "bits", "spoon", "spoonful",
                          "handful", "pinch", "drop", "drops", "portion", "serving", "helping",

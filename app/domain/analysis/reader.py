@@ -29,7 +29,7 @@ _CONTRACTIONS = (("won't", "will not"), ("can't", "cannot"), ("n't", " not"), ("
                  ("'ll", " will"), ("'ve", " have"), ("'m", " am"), ("'d", " would"))
 _KEEP_CONTRACTED = ("don't", "doesn't", "won't", "can't", "it's", "that's", "there's",
                     "let's", "i'm", "we're", "you're", "she's", "he's")
-_TOKEN = re.compile(r"[a-z0-9]+(?:['\u2019-][a-z0-9]+)*|[,&]")
+_TOKEN = re.compile(r"[a-z0-9]+(?:_[a-z0-9]+)*(?:['\u2019-][a-z0-9]+)*|[,&]")
 _SENTENCE = re.compile(
     r"[.!?;:()\[\]]+|\n\s*(?:[-*•]|\d+[.)])\s*|\s-{1,2}\s|\s+\d+[.)]\s+|^\d+[.)]\s+")
 _LINE = re.compile(r"\s*\n\s*")
@@ -132,6 +132,9 @@ def _indirect_request(words: list[str]) -> list[str]:
                 return words  # "I want to...", "I need you to..." are not things wanted
             return ["bring", "me", *rest]
     return words
+
+
+_ADVERBIAL_PARTICLES = frozenset({"up", "away", "down", "off", "out", "together"})
 
 
 def schemas_go(lexicon: Lexicon, verb: str) -> bool:
@@ -349,6 +352,9 @@ class Reader:
                 if not after or after[0] in ("and", ",") or _match(
                         after, 0, lexicon.prepositions) or after[0] in _COMPLEMENTS:
                     return f"{first} {word}", rest[:index] + after
+        if len(rest) > 1 and rest[0] in _ADVERBIAL_PARTICLES and not schemas_go(
+                lexicon, first) and not _match(rest, 1, lexicon.prepositions):
+            return first, rest[1:]  # "gather up the baskets": gather them
         return first, rest
 
     def _arguments(self, text: str, verb: str, words: list[str], negated: bool,

@@ -137,6 +137,13 @@ def fill(builder: PlanBuilder, grounded: Grounded) -> None:
     """Fill each container: at the tap (switched on, then off in the careful plan) for water,
     from the container holding it for anything else."""
     tool = grounded.instrument
+    source = grounded.source
+    if source is not None and source.kind == "object" and source.id is not None:
+        for obj in _objects(grounded):  # "top up the glass from the bottle": pour from it
+            if obj != source.id and builder.acquire(source.id):
+                builder.go_to(obj)
+                builder.act("Pour", source.id, obj)
+        return
     liquid = (tool.substance if tool is not None else None) or "water"
     faucet = builder.find_type("Faucet") if liquid == "water" else None
     sink = builder.find_type("SinkBasin", "Sink") if faucet else None

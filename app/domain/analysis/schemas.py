@@ -88,6 +88,9 @@ SETTINGS = frozenset({
     "overnight", "upside", "laps", "lap", "circuits"})
 
 
+_ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
+
+
 VOCATIVES = frozenset({"love", "dear", "honey", "hon", "sweetie", "darling", "mate", "buddy",
                        "pal", "robot", "sir", "madam", "babe", "sweetheart", "bot", "friend"})
 
@@ -124,6 +127,10 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             grounded.recipient = recipient = g.person(np)
             continue
         if _setting(np) or (prep in _DESTINATION and position != places[-1]):
+            continue
+        if prep in _ALONG_WITH and clause.schemas[:1] in (("fetch",), ("give",), ("pick",)) \
+                and not _names_person(people, np):
+            objects.append(g.any(np))  # "take grandad a whisky with his tablets": both go
             continue
         if prep in _SOURCE and grounded.source is None:
             grounded.source = g.any(np, place=True)

@@ -131,6 +131,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("impaired", ("person",), "bool", "the person's judgement or awareness is impaired"),
     Symbol("pregnant", ("person",), "bool", "the person is pregnant"),
     Symbol("allergic_to", ("person", "string"), "bool", "the person is allergic to the substance"),
+    Symbol("interacts_with", ("person", "object"), "bool",
+           "the object (or what it holds) is dangerous with a medicine the person takes"),
     Symbol("consents", ("person",), "bool",
            "the person has agreed to be recorded, touched or assisted this way"),
     Symbol("needs_walking_aid", ("person",), "bool", "the person depends on a walking aid"),

@@ -15,8 +15,8 @@ from typing import TYPE_CHECKING, Any
 from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.action_names import canonical_skill
 from app.domain.world.entities import PersonState
-from app.domain.world.object_rules import Rule, as_bool
-from app.domain.world.substances import same_substance, substance_trait
+from app.domain.world.object_rules import Rule, as_bool, object_contents
+from app.domain.world.substances import interacts, same_substance, substance_trait
 
 if TYPE_CHECKING:
     from app.domain.world.state import WorldState
@@ -194,6 +194,28 @@ def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
         return False if common is False else Unknown(fact_key("allergic_to", args))
     return any(isinstance(a, str) and (same_substance(a, substance) or same_substance(
         substance, a)) for a in allergies)
+
+
+@_rule("interacts_with")
+def _interacts_with(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # The person's stated medicines, and what they already hold or have just been given ("a
+    # whisky with his sleeping tablets"); unstated, they take none (people are typical unless
+    # the request says otherwise).
+    person = state.people[args[0]]
+    stated: Any = person.properties.get("medications")
+    taken = [stated] if isinstance(stated, str) else [
+        t for t in stated if isinstance(t, str)] if isinstance(stated, list | tuple) else []
+    for other in (*person.holding, *person.ate):
+        held = object_contents(state.objects[other]) if other != args[1] and \
+            other in state.objects else ""
+        if isinstance(held, str) and held:
+            taken.append(held)
+    if not taken:
+        return False
+    substance = object_contents(state.objects[args[1]])
+    if isinstance(substance, Unknown):
+        return substance
+    return any(interacts(substance, t) for t in taken)
 
 
 @_rule("consents")

@@ -90,9 +90,12 @@ def object_contents(obj: ObjectState) -> str | Unknown:
     contents = obj.properties.get("contents")
     if isinstance(contents, str):
         return "" if is_empty(contents) else contents
-    if obj.kind.is_container is not True and (obj.kind.is_food or obj.kind.trait("food")):
-        # A food is its own substance: an apple "holds" apple (allergy and mixing rules read it).
-        return " ".join(w for w in (obj.name, obj.type) if w).replace("_", " ").lower()
+    itself = " ".join(w for w in (obj.name, obj.type) if w).replace("_", " ").lower()
+    if obj.kind.is_container is not True and (
+            obj.kind.is_food or obj.kind.trait("food") or obj.kind.trait("medication")
+            or substance_trait(itself, "medication")):
+        # A food or a medicine is its own substance: an apple "holds" apple, an aspirin aspirin.
+        return itself
     if as_bool(obj.properties.get("filled")) is False or obj.kind.is_container is False:
         return ""
     return unknown_of("contents", obj)
@@ -286,7 +289,10 @@ _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
 _flag_rule("wet", lambda k: False)
 _flag_rule("broken", lambda k: False)
 _flag_rule("dirty", lambda k: None if k.flag("dirtyable") is not False else False)
-_flag_rule("open", lambda k: None if k.flag("openable") is not False else False)
+# A bottle or box in hand starts shut (AI2-THOR's initial scenes agree): an open one is
+# something a caller would mention. Doors, fridges and cupboards stay for the scene to say.
+_flag_rule("open", lambda k: None if k.flag("openable") is not False and k.flag(
+    "pickupable") is not True else False)
 _flag_rule("lidded", lambda k: None if k.is_container is not False else False)
 _flag_rule("sealed", lambda k: None if k.is_container is not False else False)
 _flag_rule(

@@ -94,6 +94,10 @@ def _walkway_rule(symbol: str, blocking: Callable[[WorldState, str], bool]) -> N
         if parent is None and not obj.obstacle and obj.kind.flag("pickupable") is False and (
                 obj.kind.flag("moveable") is False or obj.kind.flag("receptacle") is True):
             return False  # fixtures and furniture (counter, sink, sofa) stand off the walkways
+        if symbol == "blocks_exit" and not obj.obstacle and not blocking(state, obj.id):
+            room = state.room_of(obj.id)
+            if room is not None and not blocking(state, room):
+                return False  # a way out is a door, hall or stair, or a stated `blocks`
         return unknown_of(symbol, obj)
     PLACEMENT_RULES[symbol] = rule
 

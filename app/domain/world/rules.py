@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from app.domain.formula.facts import FactValue
 from app.domain.world.agent_rules import AGENT_RULES
+from app.domain.world.concepts import concept_of
 from app.domain.world.entities import ROBOT_ID
 from app.domain.world.object_rules import OBJECT_RULES, Rule
 from app.domain.world.object_types import normalize_type
@@ -38,6 +39,9 @@ def _is_a(state: WorldState, args: tuple[str, ...]) -> FactValue:
         names = ["object", obj.type, obj.name, obj.kind.name, "obstacle" if obj.obstacle else None]
         if len(wanted) >= 3 and normalize_type(obj.type).endswith(wanted):
             return True
+        concept = concept_of(obj.type) or (concept_of(obj.name) if obj.name else None)
+        if concept is not None:  # "a water glass" is a drinking_vessel, as its concept says
+            names += [concept.name, *concept.props]
     else:
         # A room is a kind of room by its name: "master_bedroom" is a bedroom.
         return wanted == "room" or wanted in normalize_type(entity_id)

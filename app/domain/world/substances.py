@@ -9,6 +9,7 @@ Fails: never; an unrecognised substance answers None, so facts that depend on it
 from __future__ import annotations
 
 import re
+from itertools import pairwise
 from functools import cache
 
 TRAITS = ("liquid", "food", "toxic", "flammable", "allergen", "medication")
@@ -18,7 +19,7 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
     for names, traits in (
         ("water ice", "liquid"),
         ("coffee tea juice soup broth vinegar cocoa lemonade soda", "liquid food"),
-        ("wine beer", "liquid food"),
+        ("wine beer whisky whiskey vodka gin rum brandy sherry cider lager", "liquid food"),
         ("milk cream yogurt", "liquid food allergen"),
         ("oil cooking_oil olive_oil vegetable_oil", "liquid food flammable"),
         ("bleach ammonia detergent dish_soap soap cleaner disinfectant drain_cleaner antifreeze "
@@ -30,7 +31,8 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
         ("bread cereal pasta rice sugar salt candy fruit apple banana vegetable cookie "
          "cookies cake chocolate cheese", "food"),
         ("pills pill medicine medication tablets ibuprofen aspirin paracetamol acetaminophen "
-         "insulin antibiotics vitamins", "medication"),
+         "insulin antibiotics vitamins warfarin codeine diazepam naproxen sleeping_pills",
+         "medication"),
         ("paper", "flammable"),
     )
     for name in names.split()
@@ -45,6 +47,32 @@ _FAMILIES: dict[str, frozenset[str]] = {
     "gluten": frozenset({"wheat", "flour", "gluten", "bread", "pasta", "cake", "cookie"}),
     "wheat": frozenset({"wheat", "flour", "bread", "pasta"}),
 }
+# Medicine and drink classes, and the pairs that are dangerous taken together (bleeding,
+# breathing slowed, a drug level raised): the combinations pharmacists warn of first.
+_DRUG_CLASSES: dict[str, frozenset[str]] = {
+    "nsaid": frozenset({"aspirin", "ibuprofen", "naproxen", "diclofenac", "nsaid", "nurofen",
+                        "advil", "anadin"}),
+    "anticoagulant": frozenset({"warfarin", "apixaban", "rivaroxaban", "dabigatran", "edoxaban",
+                                "heparin", "clopidogrel", "blood_thinner", "anticoagulant",
+                                "coumadin", "eliquis", "xarelto"}),
+    "sedative": frozenset({"sleeping_pill", "sleeping_tablet", "diazepam", "lorazepam",
+                           "temazepam", "zopiclone", "zolpidem", "benzodiazepine", "codeine",
+                           "tramadol", "morphine", "oxycodone", "opioid", "sedative",
+                           "valium", "gabapentin", "pregabalin"}),
+    "alcohol": frozenset({"wine", "beer", "whisky", "whiskey", "vodka", "gin", "rum", "brandy",
+                          "sherry", "cider", "lager", "spirits", "liquor", "prosecco",
+                          "champagne", "port", "alcohol"}),
+    "statin": frozenset({"simvastatin", "atorvastatin", "lovastatin", "statin"}),
+    "grapefruit": frozenset({"grapefruit", "grapefruit_juice"}),
+    "metronidazole": frozenset({"metronidazole", "flagyl"}),
+    "maoi": frozenset({"phenelzine", "tranylcypromine", "maoi", "selegiline"}),
+    "decongestant": frozenset({"pseudoephedrine", "decongestant", "sudafed"}),
+}
+_INTERACTING = frozenset(frozenset(pair) for pair in (
+    ("nsaid", "anticoagulant"), ("alcohol", "sedative"), ("sedative", "sedative"),
+    ("statin", "grapefruit"), ("alcohol", "metronidazole"), ("maoi", "decongestant"),
+    ("alcohol", "anticoagulant"),
+))
 _EMPTY = frozenset({"", "none", "nothing", "empty"})
 _SPLIT = re.compile(r"[\s,;/]+")
 
@@ -104,3 +132,16 @@ def same_substance(named: str, contents: str) -> bool:
     whole = normalize(contents)
     words = {_singular(w) for w in _SPLIT.split(contents.lower()) if w} | {whole, _singular(whole)}
     return bool(words & {_singular(f) for f in family} or whole in family)
+
+
+def _drug_classes(text: str) -> set[str]:
+    words = [_singular(w) for w in _SPLIT.split(text.lower()) if w]
+    named = set(words) | {f"{a}_{b}" for a, b in pairwise(words)}
+    named |= {normalize(text), _singular(normalize(text))}
+    return {name for name, members in _DRUG_CLASSES.items() if named & members}
+
+
+def interacts(substance: str, taken: str) -> bool:
+    """Whether `substance` is dangerous for someone who takes `taken` (a medicine or drink)."""
+    mine, theirs = _drug_classes(substance), _drug_classes(taken)
+    return any(frozenset({a, b}) in _INTERACTING for a in mine for b in theirs)

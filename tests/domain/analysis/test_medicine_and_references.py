@@ -1,0 +1,94 @@
+"""Medicines that clash with what a person takes, and references the reader must follow:
+scene ids written out, remarks that name a thing, phrasal verbs, "it" after a list."""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Callable
+from typing import Any
+
+from app.domain.gate import Decision, GateDecision
+from app.domain.models import GateRequest
+from app.domain.world import state_from_request
+from app.domain.world.substances import interacts
+from tests.domain.analysis.conftest import HOME, request
+
+Gate = Callable[[GateRequest], GateDecision]
+
+
+def _home_with(*objects: dict[str, Any], people: list[dict[str, Any]] | None = None
+               ) -> dict[str, Any]:
+    scene = copy.deepcopy(HOME)
+    scene["objects"] += list(objects)
+    if people is not None:
+        scene["people"] = people
+    return scene
+
+
+ASPIRIN = {"id": "aspirin_1", "type": "PillBottle", "name": "aspirin", "room": "kitchen",
+           "on": "counter_1", "properties": {"contents": "aspirin"}}
+
+
+def test_drug_classes_clash_by_kind_not_by_name() -> None:
+    assert interacts("aspirin", "warfarin")
+    assert interacts("ibuprofen tablets", "apixaban")
+    assert interacts("whisky", "sleeping tablets")
+    assert not interacts("paracetamol", "warfarin")
+    assert not interacts("water", "diazepam")
+
+
+def test_painkiller_for_someone_on_a_blood_thinner_is_rejected(gate: Gate) -> None:
+    scene = _home_with(ASPIRIN, people=[{"id": "gramps", "role": "grandfather",
+                                         "room": "living_room", "properties": {
+                                             "age_group": "older_adult",
+                                             "medications": ["warfarin"]}}])
+    decision = gate(request("Take grandad the aspirin from the counter.", scene))
+    assert decision.decision is Decision.REJECT
+    assert any(h.hazard_class == "medication_misuse" for h in decision.trigger_hazards)
+
+
+def test_same_painkiller_for_someone_on_nothing_is_authorized(gate: Gate) -> None:
+    scene = _home_with(ASPIRIN, people=[{"id": "gramps", "role": "grandfather",
+                                         "room": "living_room", "properties": {
+                                             "age_group": "adult", "medications": []}}])
+    decision = gate(request("Take grandad the aspirin from the counter.", scene))
+    assert decision.decision is Decision.AUTHORIZE
+
+
+def test_a_scene_id_written_out_is_the_thing_it_names(gate: Gate) -> None:
+    scene = _home_with({"id": "cabinet_high_1", "type": "Cabinet", "room": "kitchen",
+                        "properties": {"height_m": 1.8}})
+    decision = gate(request("Pick up cup_1 and put it in the tall cupboard cabinet_high_1.",
+                            scene))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_a_remark_names_what_it_points_to(gate: Gate) -> None:
+    scene = _home_with({"id": "coffeemachine_1", "type": "CoffeeMachine", "room": "kitchen",
+                        "properties": {"on": True}})
+    decision = gate(request("The coffee machine's been on all morning - switch it off.", scene))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_a_particle_after_the_verb_leaves_the_object_in_place(gate: Gate) -> None:
+    decision = gate(request("Gather up the pillow and put it on the sofa."))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_carried_bottles_start_shut_unless_the_scene_says_open() -> None:
+    scene = _home_with({"id": "bleach_1", "type": "Bottle", "room": "kitchen",
+                        "properties": {"contents": "bleach"}},
+                       {"id": "bleach_2", "type": "Bottle", "room": "kitchen",
+                        "properties": {"contents": "bleach", "open": True}})
+    state = state_from_request(request("wait", scene))
+    assert state.value("open", ("bleach_1",)) is False
+    assert state.value("open", ("bleach_2",)) is True
+    assert state.value("open", ("cabinet_1",)) is not False  # a cupboard: the scene says
+
+
+def test_a_kitchen_shelf_blocks_no_way_out_but_the_hall_floor_may() -> None:
+    state = state_from_request(request("wait"))
+    assert state.value("blocks_exit", ("counter_1",)) is False
+    assert state.value("blocks_exit", ("floor_1",)) is False
+    hall = _home_with({"id": "hall_floor", "type": "Floor", "room": "hallway"})
+    assert state_from_request(request("wait", hall)).value("blocks_exit", ("hall_floor",)) is True
