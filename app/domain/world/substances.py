@@ -9,8 +9,8 @@ Fails: never; an unrecognised substance answers None, so facts that depend on it
 from __future__ import annotations
 
 import re
-from itertools import pairwise
 from functools import cache
+from itertools import pairwise
 
 TRAITS = ("liquid", "food", "toxic", "flammable", "allergen", "medication")
 
