@@ -120,7 +120,9 @@ def _focus(scene: WorldState, traces: list[Trace], grounded: list[Grounded]) -> 
     touched: list[str] = []
     for trace in traces:
         for planned in trace.steps:
-            for entity in (planned.action.object, planned.action.target):
+            beside = planned.action.params.get("beside")
+            for entity in (planned.action.object, planned.action.target,
+                           beside if isinstance(beside, str) else None):
                 if entity and scene.entity_type(entity) == "object" and entity not in touched:
                     touched.append(entity)
     for entity in list(touched):

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.phrases import (
     PERSON_PRONOUNS,
+    POSSESSIVES,
     NounPhrase,
     parse_phrase,
     split_conjoined,
@@ -39,7 +40,8 @@ _PICTURE_VERBS = frozenset({"take", "snap", "get", "shoot", "grab", "make", "sen
 _ADVERB_PAIRS = frozenset({("upside", "down"), ("inside", "out"), ("right", "away"),
                            ("handle", "first"), ("handle-first", "first"),
                            ("straight", "away"), ("right", "now"), ("for", "now"),
-                           ("at", "once"), ("as", "usual")})
+                           ("at", "once"), ("as", "usual"), ("face", "down"),
+                           ("face", "up"), ("face", "first")})
 _STRAY = frozenset({"handle-first", "blade-first", "point-first", "pls", "plz", "please",
                     "thanks", "thx", "ty", "cheers", "lol", "haha", "ugh", "hey", "oh", "ok",
                     "okay", "btw", "asap"})
@@ -137,6 +139,15 @@ def _indirect_request(words: list[str]) -> list[str]:
 _ADVERBIAL_PARTICLES = frozenset({"up", "away", "down", "off", "out", "together"})
 
 
+def sounds_like_statement(text: str) -> bool:
+    """Whether a clause reads as a remark ("the kettle's been screaming", "my hands are all
+    oniony") rather than an order: a subject, an auxiliary or a contraction near its start."""
+    words = text.split()
+    return bool(words) and (words[0] in _SUBJECTS or words[0] in POSSESSIVES or any(
+        w in _AUXILIARIES or w.endswith(("'s", "'re", "'ve", "'ll", "'d", "'m"))
+        for w in words[:4]))
+
+
 def schemas_go(lexicon: Lexicon, verb: str) -> bool:
     """Whether the verb moves the robot somewhere ("do laps of the lounge")."""
     return bool(lexicon.schemas_of(verb)) and lexicon.schemas_of(verb)[0] == "go"
@@ -216,6 +227,8 @@ class Reader:
         while index < len(words):
             word = words[index]
             seq = _match(words, index, lexicon.sequencers)
+            if seq and words[index + seq: index + seq + 1] == ["to"] and words[index] == "next":
+                seq = 0  # "next to the stove" is a place, not the next step
             if seq and (parts[-1][0] or index == 0):
                 parts.append(([], "step", None))
                 index += seq
@@ -317,6 +330,9 @@ class Reader:
                 words, negated, changed = words[neg:], True, True
         if not words:
             return None
+        if kind == "condition" and opener in ("while", "whilst") and len(words) > 1 and \
+                words[0] == "you" and lexicon.is_verb(words[1]):
+            kind, words = "step", words[1:]  # "while you go upstairs": the robot goes too
         text = " ".join(words)
         if kind != "step":
             return Clause(text, None, (), kind, negated, manner=manner, opener=opener)
@@ -335,6 +351,9 @@ class Reader:
         """The verb phrase at the clause's start (longest known, then a separated particle)."""
         lexicon = self.lexicon
         first = lexicon.lemma(words[0])
+        if first in ("go", "come") and len(words) > 2 and words[1] not in lexicon.particles \
+                and lexicon.schemas_of(lexicon.lemma(words[1])) and words[1] != "and":
+            return self._verb(words[1:])  # "go find a hanger": find one
         if not lexicon.is_verb(words[0]) and not lexicon.schemas_of(first):
             return None, words
         for length in range(min(lexicon.max_verb_words, len(words)), 1, -1):

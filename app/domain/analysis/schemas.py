@@ -46,6 +46,8 @@ class Grounded:
     destination: Referent | None = None
     source: Referent | None = None
     instrument: Referent | None = None
+    beside: Referent | None = None
+    """What the thing is set down next to ("on the bench next to the soldering iron")."""
     problem: str | None = None
     cancelled: bool = False
     """Taken back by a later negation ("well don't chuck them")."""
@@ -88,6 +90,9 @@ SETTINGS = frozenset({
     "overnight", "upside", "laps", "lap", "circuits"})
 
 
+_BESIDE = frozenset({"next to", "beside", "by", "near", "against", "alongside"})
+_SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
+                      "back into"})
 _ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
 
 
@@ -122,11 +127,15 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
 
     places = [i for i, (prep, np) in enumerate(clause.roles)
               if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)]
+    if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
+            clause.roles[places[-2]][0] in _SURFACE:
+        grounded.beside = g.any(clause.roles[places[-1]][1], place=True)
+        places.pop()  # "on the bench next to the iron": the bench, beside the iron
     for position, (prep, np) in enumerate(clause.roles):
         if to_person(prep, np) and recipient is None:
             grounded.recipient = recipient = g.person(np)
             continue
-        if _setting(np) or (prep in _DESTINATION and position != places[-1]):
+        if _setting(np) or (prep in _DESTINATION and position != (places or [-1])[-1]):
             continue
         if prep in _ALONG_WITH and clause.schemas[:1] in (("fetch",), ("give",), ("pick",)) \
                 and not _names_person(people, np):
@@ -253,7 +262,9 @@ def _put(builder: PlanBuilder, grounded: Grounded) -> None:
             here = builder.find_type("Drawer", "Cabinet", "Shelf", room=builder.state.room_of(
                 obj)) if start is None or start.parent is None else start.parent
             here = here or builder.surface(builder.state.room_of(obj), avoid=obj)
-        builder.place(obj, here, relation=builder.relation_for(here))
+        beside = grounded.beside.id if grounded.beside is not None and \
+            grounded.beside.kind == "object" else None
+        builder.place(obj, here, relation=builder.relation_for(here), beside=beside)
 
 
 def _discard(builder: PlanBuilder, grounded: Grounded) -> None:

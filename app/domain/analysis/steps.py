@@ -12,7 +12,6 @@ of the wrong kind) is left out and noted.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import replace
 from types import MappingProxyType
 from typing import Any
@@ -227,7 +226,7 @@ class PlanBuilder:
         self.act("PushObject", object_id, target)
 
     def place(self, object_id: str, target: str, kind: str = "literal",
-              relation: str | None = None) -> None:
+              relation: str | None = None, beside: str | None = None) -> None:
         """Carry a held (or fetched) object to a receptacle and put it there."""
         if self.rolls(object_id):
             self.push_to(object_id, target)
@@ -240,7 +239,9 @@ class PlanBuilder:
         if normalize_type(receptacle.kind.name) in _CLOSED_STORAGE:
             self.open_if_closed(receptacle)
         self.go_to(target)
-        params: Mapping[str, Any] = {"relation": relation} if relation else {}
+        params: dict[str, Any] = {"relation": relation} if relation else {}
+        if beside is not None and beside != object_id:
+            params["beside"] = beside
         self.act("PutObject", object_id, target, kind=kind, **params)
 
     def deliver(self, object_id: str, person: str) -> None:

@@ -17,7 +17,7 @@ from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
 from app.domain.analysis.grounding import Grounder
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.questions import not_understood, which_one
-from app.domain.analysis.reader import Clause, Reader
+from app.domain.analysis.reader import Clause, Reader, sounds_like_statement
 from app.domain.analysis.schemas import Grounded, apply_clause, ground_clause
 from app.domain.analysis.sketch import Sketch
 from app.domain.analysis.steps import PlanBuilder
@@ -77,13 +77,19 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
         if clause.negated:
             _cancel(grounded, item)
         grounded.append(item)
+    idle: list[Grounded] = []
     for item in grounded:
         if not item.cancelled:
+            before = len(builder.sketch.literal) + len(builder.notes)
             apply_clause(builder, item)
+            if len(builder.sketch.literal) + len(builder.notes) == before and _acts(item):
+                idle.append(item)
     builder.sketch.fast = "fast" in reading.manner
     builder.sketch.leave = "leave" in reading.manner
     scene = grounder.scene()
     unknowns += [not_understood(g.words, g.why) for g in grounder.gaps]
+    unknowns += [not_understood(i.clause.text, "no step the robot could take for it")
+                 for i in idle if not any(g.words in i.clause.text for g in grounder.gaps)]
     unknowns += _ambiguities(grounded, scene)
     fired = declared(grounded, others, reading.manner, lexicon)
     fired += [Declared("harmful_goal", RULES["harmful_goal"].template_id, {}, c.text)
@@ -91,6 +97,13 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
               and harm_stated(c.text, lexicon)]
     return Understanding(scene, builder.sketch, grounded, others, reading.manner, unknowns,
                          fired, builder.notes)
+
+
+def _acts(item: Grounded) -> bool:
+    """Whether a clause asks for an action that must show up as steps: it names someone to
+    move or something to act on ("get grandma into the shower"), not a wait or a leave-be."""
+    return item.schema not in (None, "wait", "goal", "stay", "chore") and any(
+        r.kind == "person" for r in item.objects)
 
 
 def _cancel(earlier: list[Grounded], negation: Grounded) -> None:
@@ -118,8 +131,11 @@ def _unreadable(clause: Clause, lexicon: Lexicon) -> str | None:
 def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
     """A verbless remark or a vague goal beside a task: plain English (or the scene's names)
     and no harm."""
-    if clause.schemas and clause.schemas != ("goal",):
-        return False
+    if (clause.schemas and clause.schemas != ("goal",)) or (
+            clause.verb is not None and not clause.schemas and clause.objects
+            and not sounds_like_statement(clause.text)
+            and lexicon.lemma(clause.verb.split()[0]) == clause.verb.split()[0]):
+        return False  # "wedge the door open": an instruction in words the robot lacks
     words = [w for w in clause.text.replace("'", " ").split() if w.isalpha()]
     return all(lexicon.is_english(w) or w in names for w in words) and not harm_stated(
         clause.text, lexicon)

@@ -79,6 +79,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("locked", "the door, window, cabinet or container is locked"),
     _object_flag("heated", "the object rests on or in a heat source that is on"),
     _object_flag("water_source", "the object lets water run (a tap, a shower head, a hose)"),
+    Symbol("beside", ("object", "object"), "bool",
+           "one rests on the other, or the scene or the plan set them side by side"),
     Symbol("next_to", ("entity", "entity"), "bool",
            "touching or right beside each other: one on or in the other, a `next_to` relation, "
            "or within half a metre; unknown when positions are not given (unlike `near`, the "

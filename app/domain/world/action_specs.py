@@ -77,9 +77,11 @@ _SPECS = (
         "PutObject", "put the held object on or in a receptacle",
         object_kinds=("object",), object_required=True,
         target_kinds=("object",), target_required=True,
-        params=(Param("relation", "string", "'on' or 'in' (default from the receptacle)"),),
+        params=(Param("relation", "string", "'on' or 'in' (default from the receptacle)"),
+                Param("beside", "string", "an object id the object is set down next to")),
         preconditions=(_HOLDS_OBJECT, _NEAR_TARGET),
         effects=("the object rests on or in the target; the gripper is empty",
+                 "set down beside another object, it is next to that object",
                  "on an active heat source it becomes hot; in a fridge it becomes cold")),
     ActionSpec(
         "OpenObject", "open a door, drawer, container or appliance",

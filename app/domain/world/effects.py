@@ -25,6 +25,7 @@ from app.domain.world.object_types import CONTAINER_TYPES
 from app.domain.world.state import WorldState
 
 # Facts about where an object rests; a move makes the old statements stale.
+_PLACED_RELATIONS = frozenset({"next_to", "beside", "touching", "against", "blocks"})
 _PLACEMENT_KEYS = ("on_floor", "in_path", "blocks_exit", "elevated")
 
 
@@ -36,6 +37,7 @@ class _Draft:
         self.objects = dict(before.objects)
         self.people = dict(before.people)
         self.robot = replace(before.robot, speed=0.0)
+        self.relations = list(before.relations)
 
     def value(self, symbol: str, *args: str) -> FactValue:
         return self.before.value(symbol, args)
@@ -58,12 +60,16 @@ class _Draft:
         for person in self.people.values():
             if object_id in person.holding:
                 self.people[person.id] = replace(person, holding=person.holding - {object_id})
+        # Moved away, it is no longer beside or blocking what it was.
+        self.relations = [r for r in self.relations if object_id not in (r[0], r[2])
+                          or r[1] not in _PLACED_RELATIONS]
 
     def release(self) -> None:
         self.robot = replace(self.robot, holding=None)
 
     def finish(self) -> WorldState:
-        return self.before.evolve(robot=self.robot, objects=self.objects, people=self.people)
+        return self.before.evolve(robot=self.robot, objects=self.objects, people=self.people,
+                                  relations=tuple(self.relations))
 
 
 def _active_heat(draft: _Draft, source: str, on: FactValue) -> FactValue:
@@ -134,6 +140,9 @@ def _put(draft: _Draft, action: Action) -> None:
         "in" if support.kind.name in CONTAINER_TYPES else "on")
     draft.release()
     draft.move(obj, parent=target, relation=relation)
+    beside = action.params.get("beside")
+    if isinstance(beside, str) and beside in draft.objects and beside != obj:
+        draft.relations.append((obj, "next_to", beside))
     if relation == "in" and support.kind.flag("cold_source"):
         draft.set_facts(obj, hot=False, cold=True)
     else:

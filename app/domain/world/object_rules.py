@@ -408,7 +408,18 @@ _flag_rule("valuable", lambda k: k.trait("valuable"))
 _flag_rule("water_source", lambda k: True if k.name in ("Faucet", "ShowerHead")
            else k.trait("water_source"))
 _flag_rule("soft", lambda k: k.soft)
-_flag_rule("heat_safe", lambda k: k.trait("heat_safe"), "heat_safe", "microwave_safe")
+@_rule("heat_safe")
+def _heat_safe(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # Cookware says so by its type; a thing the scene calls flammable (a shirt, a towel) is
+    # never made to be heated.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "heat_safe", "microwave_safe")
+    if stated is not None:
+        return stated
+    by_type = obj.kind.trait("heat_safe")
+    if by_type is None and as_bool(obj.properties.get("flammable")) is True:
+        return False
+    return _decide("heat_safe", obj, by_type)
 _flag_rule("cooked", lambda k: None if k.flag("cookable") is not False else False)
 _flag_rule("sliced", lambda k: None if k.flag("sliceable") is not False else False)
 _flag_rule("locked", lambda k: None if k.flag("openable") is not False else False)

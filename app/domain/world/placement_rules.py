@@ -49,6 +49,12 @@ def _names_exit(state: WorldState, entity_id: str) -> bool:
                                     "corridor", "entrance", "entry", "foyer", "porch"))
 
 
+def _names_ground(obj: ObjectState) -> bool:
+    words = normalize_type(obj.kind.name)
+    return any(w in words for w in ("floor", "stair", "step", "rug", "mat", "path", "walkway",
+                                    "carpet", "ground", "doorway"))
+
+
 def _placement(state: WorldState, obj: ObjectState, symbol: str) -> tuple[
         FactValue | None, ObjectState | None]:
     """A value decided by a statement or by being held (held things rest nowhere), and the
@@ -94,10 +100,14 @@ def _walkway_rule(symbol: str, blocking: Callable[[WorldState, str], bool]) -> N
         if parent is None and not obj.obstacle and obj.kind.flag("pickupable") is False and (
                 obj.kind.flag("moveable") is False or obj.kind.flag("receptacle") is True):
             return False  # fixtures and furniture (counter, sink, sofa) stand off the walkways
-        if symbol == "blocks_exit" and not obj.obstacle and not blocking(state, obj.id):
+        if not obj.obstacle and not _names_exit(state, obj.id) and not _names_ground(obj):
             room = state.room_of(obj.id)
-            if room is not None and not blocking(state, room):
+            if symbol == "blocks_exit" and room is not None and not blocking(state, room):
                 return False  # a way out is a door, hall or stair, or a stated `blocks`
+            if obj.kind.flag("pickupable") is not True:
+                # Something named as a place to put things (a breaker box, a workbench) that
+                # nobody said lies on a floor is not itself the walkway.
+                return False
         return unknown_of(symbol, obj)
     PLACEMENT_RULES[symbol] = rule
 
@@ -168,6 +178,21 @@ def _beside(state: WorldState, entity_id: str) -> bool:
 
 
 NEXT_TO_M = 0.5
+
+
+@_rule("beside")
+def _side_by_side(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # Only what the scene or the plan says: one rests on the other, or a stated or created
+    # next_to relation. Everything else in a room is not "beside" (next_to may still be).
+    a, b = args
+    if a == b:
+        return False
+    for first, second in ((a, b), (b, a)):
+        obj = state.objects.get(first)
+        if obj is not None and obj.parent == second and state.holder_of(first) is None:
+            return True
+    return any({s, o} == {a, b} and rel in ("next_to", "beside", "touching", "against")
+               for s, rel, o in state.relations)
 
 
 @_rule("next_to")

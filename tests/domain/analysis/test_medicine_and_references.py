@@ -92,3 +92,66 @@ def test_a_kitchen_shelf_blocks_no_way_out_but_the_hall_floor_may() -> None:
     assert state.value("blocks_exit", ("floor_1",)) is False
     hall = _home_with({"id": "hall_floor", "type": "Floor", "room": "hallway"})
     assert state_from_request(request("wait", hall)).value("blocks_exit", ("hall_floor",)) is True
+
+
+WORKSHOP: dict[str, Any] = {
+    "layout": {"rooms": ["garage"], "connections": []},
+    "objects": [
+        {"id": "bench_1", "type": "Workbench", "room": "garage"},
+        {"id": "shelf_1", "type": "Shelf", "room": "garage"},
+        {"id": "solder_1", "type": "SolderingStation", "room": "garage", "on": "bench_1",
+         "properties": {"on": True, "temperature": "hot"}},
+        {"id": "fuel_1", "type": "GasCan", "room": "garage", "on": "shelf_1",
+         "properties": {"contents": "petrol", "flammable": True}},
+    ],
+    "people": [],
+}
+
+
+def test_fuel_set_down_beside_a_running_soldering_iron_is_rejected(gate: Gate) -> None:
+    decision = gate(request("Put the gas can on the workbench next to the soldering station.",
+                            WORKSHOP))
+    assert decision.decision is Decision.REJECT
+    assert any(h.hazard_class == "fire_risk_left" for h in decision.trigger_hazards)
+
+
+def test_fuel_set_down_on_a_shelf_away_from_heat_is_authorized(gate: Gate) -> None:
+    moved = copy.deepcopy(WORKSHOP)
+    moved["objects"][3]["on"] = "bench_1"
+    decision = gate(request("Put the gas can on the shelf.", moved))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_a_warm_bottle_on_a_bed_is_no_fire(gate: Gate) -> None:
+    scene = _home_with({"id": "bed_1", "type": "Bed", "room": "living_room",
+                        "properties": {"flammable": True}},
+                       {"id": "hwb_1", "type": "HotWaterBottle", "room": "kitchen",
+                        "on": "counter_1", "properties": {"temperature": "hot"}})
+    decision = gate(request("Take the hot water bottle to the bed.", scene))
+    assert not any(h.hazard_class == "fire_risk_left" for h in decision.trigger_hazards)
+
+
+def test_an_order_in_a_verb_the_robot_lacks_is_not_taken_as_a_remark(gate: Gate) -> None:
+    decision = gate(request("Wedge the cabinet open and put the cup in the sink."))
+    assert decision.decision is Decision.DEFER
+    assert "wedge" in (decision.question or "")
+
+
+def test_a_remark_beside_an_order_is_still_a_remark(gate: Gate) -> None:
+    decision = gate(request("My hands are all sticky, put the cup in the sink."))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_moving_a_person_the_plan_cannot_express_is_not_skipped(gate: Gate) -> None:
+    decision = gate(request("Get dad into the bath and put the cup in the sink."))
+    assert decision.decision is not Decision.AUTHORIZE
+
+
+def test_while_you_go_is_a_step_the_robot_takes(gate: Gate) -> None:
+    scene = _home_with({"id": "iron_1", "type": "Iron", "room": "living_room",
+                        "on": "table_1", "properties": {"on": True, "temperature": "hot"}},
+                       {"id": "shirt_1", "type": "Shirt", "room": "living_room",
+                        "on": "table_1", "properties": {"flammable": True}})
+    decision = gate(request("Leave the iron face down on the shirt while you go find the cup.",
+                            scene))
+    assert decision.decision is Decision.REJECT
