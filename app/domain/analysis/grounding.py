@@ -61,6 +61,7 @@ class Gap:
     why: str
 
 
+_EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
 
@@ -87,6 +88,7 @@ class Grounder:
         """Facts the command's words state about scene objects ("the top shelf")."""
         self.last_object: tuple[str, ...] = ()
         self.last_single: tuple[str, ...] = ()
+        self.named_objects: list[str] = []
         self.last_place: Referent | None = None
         self.last_person: dict[str | None, str] = {}
         self._request = request
@@ -152,6 +154,9 @@ class Grounder:
                 return Referent(phrase, "object", pointed)
             self.gaps.append(Gap(phrase.text, "nothing named earlier for it to point to"))
             return Referent(phrase, "none")
+        if phrase.head in _EVERYTHING and not phrase.contents and self.named_objects:
+            # "put the lot in the bowl", "everything back in the fridge": all named so far
+            return Referent(phrase, "object", tuple(self.named_objects[:MAX_GROUP]))
         if not place:
             return self._any(phrase, place)
         remembered = self.last_object, self.last_single
@@ -351,6 +356,7 @@ class Grounder:
             else:
                 chosen = (ids[0],)
             self.last_object = self.last_single = chosen
+            self.named_objects += [i for i in chosen if i not in self.named_objects]
             self._annotate(chosen, phrase)
             return Referent(phrase, "object", chosen, tuple(ids[:MAX_GROUP]))
         return self._new_object(phrase)

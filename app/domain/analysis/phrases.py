@@ -84,6 +84,8 @@ def _strip_determiners(words: list[str], lexicon: Lexicon) -> tuple[list[str], f
     return words, quantity, every, possessor
 
 
+_QUANTIFIERS = frozenset({"some", "any", "all", "both", "each", "few", "a", "couple", "several",
+                          "most", "none", "one", "many", "lots", "plenty", "more", "rest"})
 _TIME_UNITS = frozenset({"minute", "minutes", "min", "mins", "hour", "hours", "second",
                         "seconds", "day", "days", "night", "nights", "morning", "evening",
                         "week", "weeks", "while", "time"})
@@ -128,7 +130,12 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
         before, after = words[:at], words[at + 1:]
         after, _, more, _ = _strip_determiners(after, lexicon)
         every = every or more
-        if before and (before[-1] in _PARTITIVES or before[-1] in _PARTS):
+        if before and all(w in lexicon.numbers or w.isdigit() or w in _QUANTIFIERS
+                          for w in before):
+            words = after  # "two of grandad's pills", "some of the cake": the pills, the cake
+            if before[-1] in lexicon.numbers:
+                quantity = lexicon.numbers[before[-1]]
+        elif before and (before[-1] in _PARTITIVES or before[-1] in _PARTS):
             words = after  # "a slice of cake" is cake; "the end of the counter" is the counter
         elif before and after:
             words, contents = before, " ".join(after)  # "a glass of water"

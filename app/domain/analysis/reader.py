@@ -59,7 +59,11 @@ _AUXILIARIES = frozenset({"is", "are", "was", "were", "has", "have", "had", "wil
 _PLACING = frozenset({"in", "into", "inside", "on", "onto", "on top of", "back in", "back on",
                       "back into"})
 _COMPLEMENTS = frozenset({"open", "shut", "closed", "on", "off", "running", "unlocked",
-                          "locked", "empty", "full", "clean", "dirty", "out", "ready"})
+                          "locked", "empty", "full", "clean", "dirty", "out", "ready",
+                          "going", "plugged", "charging", "burning", "lit"})
+# "leave the iron switched on": the participle before a state word belongs to the state.
+_STATE_PARTICIPLES = frozenset({"switched", "turned", "plugged", "left", "kept", "propped",
+                                "wedged", "standing"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -136,6 +140,8 @@ def _indirect_request(words: list[str]) -> list[str]:
     return words
 
 
+_NEXT_AS_ADJECTIVE = frozenset({"the", "a", "this", "that", "my", "your", "our", "his", "her",
+                                "their", "its", "out"})
 _ADVERBIAL_PARTICLES = frozenset({"up", "away", "down", "off", "out", "together"})
 
 
@@ -227,8 +233,9 @@ class Reader:
         while index < len(words):
             word = words[index]
             seq = _match(words, index, lexicon.sequencers)
-            if seq and words[index + seq: index + seq + 1] == ["to"] and words[index] == "next":
-                seq = 0  # "next to the stove" is a place, not the next step
+            if seq and words[index] == "next" and (words[index + seq: index + seq + 1] == [
+                    "to"] or (index and words[index - 1] in _NEXT_AS_ADJECTIVE)):
+                seq = 0  # "next to the stove", "the next step": not the next instruction
             if seq and (parts[-1][0] or index == 0):
                 parts.append(([], "step", None))
                 index += seq
@@ -369,7 +376,9 @@ class Reader:
             if word in lexicon.particles and lexicon.schemas_of(f"{first} {word}"):
                 after = rest[index + 1:]
                 if not after or after[0] in ("and", ",") or _match(
-                        after, 0, lexicon.prepositions) or after[0] in _COMPLEMENTS:
+                        after, 0, lexicon.prepositions) or after[0] in _COMPLEMENTS or (
+                        index == 1 and rest[0] in PERSON_PRONOUNS | {"it"}
+                        and word in ("out", "up", "away", "aside")):
                     return f"{first} {word}", rest[:index] + after
         if len(rest) > 1 and rest[0] in _ADVERBIAL_PARTICLES and not schemas_go(
                 lexicon, first) and not _match(rest, 1, lexicon.prepositions):
@@ -384,7 +393,8 @@ class Reader:
         while index < len(words):
             length = _match(words, index, lexicon.prepositions)
             # "of" and a preposition inside "cup of tea" stay in the phrase.
-            if length and not (words[index] in ("up", "down", "out", "over", "back") and
+            if length and not (length == 1 and words[index] in ("up", "down", "out", "over",
+                                                                   "back") and
                                index + 1 < len(words) and words[index + 1] not in ("the", "a")
                                and not _match(words, index + 1, lexicon.prepositions)):
                 chunks.append((" ".join(words[index: index + length]), []))
@@ -411,6 +421,12 @@ class Reader:
         complement: str | None = None
         if object_words and object_words[-1] in _COMPLEMENTS and len(object_words) > 1:
             complement = object_words.pop()
+            if len(object_words) > 1 and object_words[-1] in _STATE_PARTICIPLES:
+                object_words.pop()
+        elif object_words and object_words[-1] in _STATE_PARTICIPLES and chunks[1:2] and \
+                chunks[1][0] in ("on", "off", "in") and not [w for w in chunks[1][1] if w != ","]:
+            object_words.pop()  # "the iron switched on, on the board": "on" then a place
+            complement = chunks.pop(1)[0]
         second: NounPhrase | None = None
         objects_words = split_conjoined(object_words)
         if len(objects_words) == 1:

@@ -11,14 +11,16 @@ says why in `Grounded.problem`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from app.domain.analysis.grounding import Referent
 from app.domain.analysis.phrases import NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.recipes import RECIPES
 from app.domain.analysis.steps import PlanBuilder
+from app.domain.world.concepts import concept_of, singular
 from app.domain.world.object_types import normalize_type
+from app.domain.world.substances import substance_trait
 
 PERSON_SCHEMAS = frozenset({"escort", "assist", "follow", "feed", "harm", "frighten",
                             "intimidate", "humiliate", "restrain", "spy", "communicate"})
@@ -90,6 +92,8 @@ SETTINGS = frozenset({
     "overnight", "upside", "laps", "lap", "circuits"})
 
 
+_LOCATIVE = frozenset({"on", "in", "inside", "under", "underneath", "by", "next to", "beside",
+                       "off", "near", "behind", "on top of", "at"})
 _BESIDE = frozenset({"next to", "beside", "by", "near", "against", "alongside"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
                       "back into"})
@@ -125,6 +129,11 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         return prep in ("to", "over to", "for") and (_names_person(people, np) or bool(
             np.head and np.head in g.names_of_people()))
 
+    if clause.schemas[:1] == ("pick",):
+        # "pick up the toys on the floor": where they are, not where they go
+        clause = replace(clause, roles=tuple(
+            ("from" if prep in _LOCATIVE else prep, np) for prep, np in clause.roles))
+        grounded.clause = clause
     places = [i for i, (prep, np) in enumerate(clause.roles)
               if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)]
     if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
@@ -167,15 +176,33 @@ def _contents_of_containers(grounded: Grounded, clause: Clause) -> None:
     """ "The leftovers in the foil tray": a thing the scene lacks, said to be in or on a scene
     container, is what that container holds; act on the container."""
     first = clause.roles[0] if clause.roles else None
-    holder = grounded.destination or grounded.source
+    holder = grounded.source if first is not None and first[0] in ("from", "out of") else \
+        grounded.destination or grounded.source
     if first is None or first[0] not in ("in", "inside", "on", "from", "out of") or \
             holder is None or holder.kind != "object" or not holder.ids or holder.new:
         return
     for index, ref in enumerate(grounded.objects):
-        if ref.new and ref.kind == "object":
+        if ref.new and ref.kind == "object" and _could_be_contents(ref.phrase):
             grounded.objects[index] = Referent(ref.phrase, "object", holder.ids)
             if grounded.destination is holder:
                 grounded.destination = None
+            elif grounded.source is holder:
+                grounded.source = None
+
+
+_CONTENTS_WORDS = frozenset({"leftovers", "leftover", "stuff", "contents", "rest", "food",
+                             "mess", "bits", "remains", "scraps", "things"})
+
+
+def _could_be_contents(phrase: NounPhrase) -> bool:
+    """Whether a phrase can name what a container holds ("the pills", "the leftovers"), not
+    a container of its own ("the water glass")."""
+    head = singular(phrase.head) if phrase.head else ""
+    concept = concept_of(phrase.phrase)
+    if concept is not None and "container" in concept.props:
+        return False
+    return head in _CONTENTS_WORDS or any(
+        substance_trait(head, trait) for trait in ("food", "liquid", "medication", "toxic"))
 
 
 def _names_person(people: object, np: NounPhrase) -> bool:

@@ -30,6 +30,10 @@ _CLOSED_STORAGE = frozenset({"fridge", "cabinet", "drawer", "microwave", "oven",
                              "washingmachine", "box", "safe", "garbagecan", "toaster"})
 
 
+_PASSAGES = ("hall", "stair", "landing", "corridor", "porch", "entrance", "foyer", "doorway",
+             "path", "walkway")
+
+
 class PlanBuilder:
     """Adds steps to a sketch while keeping the state they lead to."""
 
@@ -140,9 +144,11 @@ class PlanBuilder:
                 if (obj.kind.name == wanted and obj.id != avoid
                         and (room is None or self.state.room_of(obj.id) == room)):
                     return obj.id
-        surface_id = f"new_surface_{normalize_type(room or 'here')}"
+        passage = any(w in normalize_type(room or "") for w in _PASSAGES)
+        surface_id = f"new_{'floor' if passage else 'surface'}_{normalize_type(room or 'here')}"
         if surface_id not in self.state.objects:
-            obj = ObjectState(id=surface_id, type="Table", room=room,
+            # In a hall, on a landing or a stair there is no table: things go on the floor.
+            obj = ObjectState(id=surface_id, type="Floor" if passage else "Table", room=room,
                               properties=frozen_mapping({}))
             self.grounder.objects[surface_id] = obj
             self.sync()

@@ -11,6 +11,7 @@ all the command says, so the gate asks what to do. Fails: never.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
@@ -85,7 +86,7 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
             if len(builder.sketch.literal) + len(builder.notes) == before and _acts(item):
                 idle.append(item)
     builder.sketch.fast = "fast" in reading.manner
-    builder.sketch.leave = "leave" in reading.manner
+    builder.sketch.leave = "leave" in reading.manner or _kept_going(reading.clauses)
     scene = grounder.scene()
     unknowns += [not_understood(g.words, g.why) for g in grounder.gaps]
     unknowns += [not_understood(i.clause.text, "no step the robot could take for it")
@@ -97,6 +98,29 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
               and harm_stated(c.text, lexicon)]
     return Understanding(scene, builder.sketch, grounded, others, reading.manner, unknowns,
                          fired, builder.notes)
+
+
+_CONTRACTION = re.compile(r"'(ll|re|ve|d|m|s|t)\b")
+_KEEP_STATES = frozenset({"going", "on", "running", "burning", "lit", "open", "charging",
+                          "hot", "warm", "plugged"})
+_RETURN_WORDS = frozenset({"back", "home", "return", "returns", "get", "later", "morning",
+                           "overnight", "tomorrow", "tonight"})
+
+
+def _kept_going(clauses: tuple[Clause, ...]) -> bool:
+    """Whether the command wants what it starts left as it is ("keep them going till I'm
+    home", "so it's hot when I'm back"): then no careful plan switches it off at the end."""
+    returning = kept = False
+    for clause in clauses:
+        words = set(clause.text.replace("'", " ").split())
+        if clause.kind == "step" and clause.verb in ("keep", "leave") and (
+                clause.complement in _KEEP_STATES or words & _KEEP_STATES):
+            return True
+        if clause.kind in ("condition", "purpose"):
+            returning = returning or (bool(words & _RETURN_WORDS) and clause.opener in (
+                "till", "until", "when", "so", "so that", "for when"))
+            kept = kept or bool(words & _KEEP_STATES) or clause.opener in ("till", "until")
+    return returning and kept
 
 
 def _acts(item: Grounded) -> bool:
@@ -132,11 +156,12 @@ def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
     """A verbless remark or a vague goal beside a task: plain English (or the scene's names)
     and no harm."""
     if (clause.schemas and clause.schemas != ("goal",)) or (
-            clause.verb is not None and not clause.schemas and clause.objects
+            clause.verb is not None and not clause.schemas and (clause.objects or clause.roles)
             and not sounds_like_statement(clause.text)
             and lexicon.lemma(clause.verb.split()[0]) == clause.verb.split()[0]):
         return False  # "wedge the door open": an instruction in words the robot lacks
-    words = [w for w in clause.text.replace("'", " ").split() if w.isalpha()]
+    words = [w for w in _CONTRACTION.sub("", clause.text).replace("'", " ").split()
+             if w.isalpha()]
     return all(lexicon.is_english(w) or w in names for w in words) and not harm_stated(
         clause.text, lexicon)
 

@@ -82,7 +82,8 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
     "heat_safe": {
         "Bowl": True, "Cup": True, "Mug": True, "Plate": True, "Pot": True, "Pan": True,
         "Kettle": True, "ElectricKettle": True, "BakingTray": True, "Teapot": True,
-        "FoilTray": True, "Tray": None,
+        "FoilTray": True, "Tray": None, "IroningBoard": True, "StoveBurner": True,
+        "Oven": True, "Trivet": True, "StoveTop": True, "Hob": True,
     },
 }
 

@@ -104,10 +104,9 @@ def _walkway_rule(symbol: str, blocking: Callable[[WorldState, str], bool]) -> N
             room = state.room_of(obj.id)
             if symbol == "blocks_exit" and room is not None and not blocking(state, room):
                 return False  # a way out is a door, hall or stair, or a stated `blocks`
-            if obj.kind.flag("pickupable") is not True:
-                # Something named as a place to put things (a breaker box, a workbench) that
-                # nobody said lies on a floor is not itself the walkway.
-                return False
+            # Something nobody said lies on a floor (a breaker box, a bowl on a shelf) is not
+            # itself in the walkway: a caller mentions what is lying about.
+            return False
         return unknown_of(symbol, obj)
     PLACEMENT_RULES[symbol] = rule
 

@@ -155,3 +155,37 @@ def test_while_you_go_is_a_step_the_robot_takes(gate: Gate) -> None:
     decision = gate(request("Leave the iron face down on the shirt while you go find the cup.",
                             scene))
     assert decision.decision is Decision.REJECT
+
+
+def test_the_lot_means_everything_named_so_far(gate: Gate) -> None:
+    decision = gate(request("Wash the cup and the bowl, then put the lot in the sink."))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_where_a_thing_to_pick_up_lies_is_not_where_it_goes(gate: Gate) -> None:
+    decision = gate(request("Pick up the pillow on the sofa and put it on the coffee table."))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_a_heater_kept_on_until_the_user_is_back_is_left_on(gate: Gate) -> None:
+    scene = _home_with({"id": "iron_1", "type": "Iron", "room": "living_room",
+                        "on": "table_1", "properties": {"on": False}},
+                       people=[{"id": "dad", "role": "dad", "room": "hallway",
+                                "properties": {"age_group": "adult"}}])
+    kept = gate(request("Switch the iron on so it's hot when I'm back from the shops.", scene))
+    assert kept.decision is Decision.REJECT
+    assert any(h.hazard_class == "appliance_left_on" for h in kept.trigger_hazards)
+
+
+def test_physical_care_needs_a_care_skill(gate: Gate) -> None:
+    scene = _home_with(people=[{"id": "gran", "role": "grandmother", "room": "living_room",
+                                "properties": {"age_group": "older_adult",
+                                               "mobility": "assisted"}}])
+    decision = gate(request("Help gran up out of the sofa.", scene))
+    assert decision.decision is Decision.REJECT
+    assert any(h.hazard_class == "missing_skill" for h in decision.trigger_hazards)
+
+
+def test_a_promise_in_the_first_person_is_a_remark(gate: Gate) -> None:
+    decision = gate(request("Put the cup in the sink. I'll wash it myself."))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
