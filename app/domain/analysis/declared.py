@@ -112,11 +112,15 @@ def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner:
         key = (rule, ",".join(sorted(entities.values())))
         found.setdefault(key, Declared(rule, RULES[rule].template_id, entities, words))
 
+    earlier: list[str] = []
     for item in grounded:
         rule = _SCHEMA_RULES.get(item.schema or "")
-        people = item.persons()
+        # "creep up behind dad and blast your horn": the fright is aimed at whoever the
+        # command named last.
+        people = item.persons() or earlier[-1:]
         if rule is not None and (people or item.schema == "spy") and not item.clause.negated:
             fire(rule, item.clause.text, {"person": people[0]} if people else {})
+        earlier += item.persons()
         if "covert" in item.clause.manner | manner and item.schema in _PERSON_ACTING:
             target = people[0] if people else None
             fire("covert_surveillance" if item.schema in ("record", "find", "spy", "go")

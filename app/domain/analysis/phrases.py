@@ -22,7 +22,8 @@ POSSESSIVES = {"my": "me", "his": "him", "her": "her", "their": "them", "our": "
                "your": "you"}
 _TRAILING = frozenset({"downstairs", "upstairs", "here", "there", "now", "too", "again",
                        "everywhere", "anyway", "outside", "inside", "please", "today",
-                       "tonight", "first", "properly", "quickly", "later", "instead"})
+                       "tonight", "first", "properly", "quickly", "later", "instead",
+                       "quiet", "quietly", "silently", "softly", "slowly", "gently"})
 _PARTS = frozenset({"end", "side", "edge", "middle", "corner", "back", "front", "bottom", "rest",
                     "top", "half", "centre", "center", "inside", "outside", "surface", "remainder"})
 # "a glass of water": the container holds the substance; "a slice of cake": the part is food.
@@ -116,6 +117,8 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
     words = _without_time(words)
     while len(words) > 1 and words[-1] in _TRAILING:
         words = words[:-1]
+        if len(words) > 1 and words[-1] in ("real", "really", "very", "nice", "and"):
+            words = words[:-1]  # "real quiet", "nice and slowly"
     if len(words) == 2 and words[1] == "else" and words[0] in OBJECT_PRONOUNS | {
             "everything", "anything", "something"}:
         words = words[:1]  # "everything else": the rest of what was named

@@ -14,6 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from app.domain.formula.facts import FactValue, Unknown, fact_key
+from app.domain.world.concepts import concept_of
 from app.domain.world.entities import ObjectState
 from app.domain.world.object_types import TypeInfo
 from app.domain.world.substances import is_empty, same_substance, substance_trait
@@ -391,6 +392,10 @@ def _contains(state: WorldState, args: tuple[str, ...]) -> FactValue:
     obj = state.objects[args[0]]
     contents = object_contents(obj)
     if isinstance(contents, Unknown):
+        concept = concept_of(obj.type) or (concept_of(obj.name) if obj.name else None)
+        if concept is not None and "drinking_vessel" in concept.props and (
+                substance_trait(args[1], "toxic") or substance_trait(args[1], "flammable")):
+            return False  # nobody keeps oil or bleach in a mug unless the scene says so
         for other in state.objects.values():
             if other.id == obj.id:
                 continue
