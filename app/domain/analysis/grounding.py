@@ -183,6 +183,12 @@ class Grounder:
     def room(self, phrase: NounPhrase) -> str | None:
         """The room a phrase names (a layout room, or a room word the layout lacks)."""
         text = phrase.phrase.replace("'s", "")
+        if text in ("upstairs", "downstairs"):
+            # "nip upstairs": the landing or a room the layout names as on that floor
+            for room in self.rooms:
+                key = normalize_type(room)
+                if text in key or (text == "upstairs" and "landing" in key):
+                    return room
         canonical = self.lexicon.rooms.get(text) or self.lexicon.rooms.get(phrase.head)
         if canonical is None and normalize_type(text) not in {normalize_type(r)
                                                               for r in self.rooms}:

@@ -101,4 +101,11 @@ def canonical_skill(name: str) -> str:
         The family name, or the name normalised (lower case, letters and digits) if unknown.
     """
     action = canonical_action(name)
-    return _SKILL_FAMILY[action] if action else _key(name)
+    key = _key(name)
+    return _SKILL_FAMILY[action] if action else _SKILL_SYNONYMS.get(key, key)
+
+
+# Robot abilities that are no action of their own: moving between floors.
+_SKILL_SYNONYMS = {"stairs": "climbstairs", "stairclimbing": "climbstairs",
+                   "stairclimb": "climbstairs", "climbstairs": "climbstairs",
+                   "climbingstairs": "climbstairs", "legs": "climbstairs"}

@@ -179,6 +179,31 @@ def _beside(state: WorldState, entity_id: str) -> bool:
 NEXT_TO_M = 0.5
 
 
+_STAIR_WORDS = ("stair", "staircase", "stairway", "steps")
+
+
+def _is_stairs(room: str) -> bool:
+    return any(w in normalize_type(room) for w in _STAIR_WORDS)
+
+
+@_rule("via_stairs")
+@_rule("room_via_stairs")
+def _via_stairs(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # True only on evidence: every route of the layout passes a stairs room, or (without
+    # connections) one end is the stairs or says it is upstairs and the other does not.
+    # A place nobody located is not assumed to be on another floor.
+    start, goal = state.robot.room, state.room_of(args[0])
+    if start is None or goal is None or start == goal:
+        return False
+    if state.connections:
+        stairs = frozenset(r for r in state.rooms if _is_stairs(r))
+        if not stairs or state.route(start, goal, avoiding=stairs) is not None:
+            return False
+        return state.route(start, goal) is not None
+    upstairs = ["upstairs" in normalize_type(r) for r in (start, goal)]
+    return _is_stairs(goal) or _is_stairs(start) or upstairs[0] != upstairs[1]
+
+
 @_rule("beside")
 def _side_by_side(state: WorldState, args: tuple[str, ...]) -> FactValue:
     # Only what the scene or the plan says: one rests on the other, or a stated or created

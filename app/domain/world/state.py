@@ -197,6 +197,30 @@ class WorldState:
             return None
         return math.hypot(pa.x - pb.x, pa.y - pb.y)
 
+    def route(self, start: str, goal: str, avoiding: frozenset[str] = frozenset()
+              ) -> tuple[str, ...] | None:
+        """The rooms from `start` to `goal` by the fewest connections (both ends included),
+        never entering a room in `avoiding` (except the ends); None if the layout gives none."""
+        if start == goal:
+            return (start,)
+        came: dict[str, str] = {start: start}
+        frontier = [start]
+        while frontier:
+            following: list[str] = []
+            for room in frontier:
+                for a, b in sorted(self.connections):
+                    if a != room or b in came or (b in avoiding and b != goal):
+                        continue
+                    came[b] = room
+                    if b == goal:
+                        path = [b]
+                        while path[-1] != start:
+                            path.append(came[path[-1]])
+                        return tuple(reversed(path))
+                    following.append(b)
+            frontier = following
+        return None
+
     def fresh_unknown(self, symbol: str, args: Sequence[str]) -> Unknown:
         """An unknown an effect creates, distinct from the same fact's unknown in earlier states."""
         return Unknown(f"{fact_key(symbol, args)}@{self.version + 1}")
