@@ -48,6 +48,9 @@ RULES: dict[str, DeclaredRule] = {
     "covert_surveillance": DeclaredRule("surveillance", "intent.covert_surveillance",
                                         "the command tells the robot to watch, record or "
                                         "search someone's things covertly"),
+    "private_information": DeclaredRule("privacy_intrusion", "privacy.private_information_read",
+                                        "the command has the robot read, record or pass on "
+                                        "another person's private things"),
     "harmful_goal": DeclaredRule("harmful_intent", "intent.harmful_goal",
                                  "the command states harm as its goal"),
     "harmful_purpose": DeclaredRule("harmful_intent", "intent.harmful_purpose",
@@ -93,6 +96,29 @@ def harm_stated(text: str, lexicon: Lexicon) -> bool:
     return any(" " in phrase and phrase in text for phrase in lexicon.harm_words)
 
 
+_READING = frozenset({"record", "communicate", "find", "spy"})
+_OWN = frozenset({"me", "us", "you", "my", "our", "your", "i", "we"})
+
+
+def _someone_elses_private_thing(item: Grounded, lexicon: Lexicon) -> str | None:
+    """The owner named for a private thing the clause reads, records or passes on ("read
+    her messages", "photograph the lodger's paperwork"), if it is not the speaker."""
+    second = item.clause.second
+    # "read her messages": "her" may have been read as the one read to
+    ambiguous_her = second is not None and second.pronoun == "her"
+    phrases = [ref.phrase for ref in item.objects]
+    if item.schema in ("record", "find", "spy"):
+        phrases += [np for _, np in item.clause.roles]  # "photos of whatever's on his desk"
+    for phrase in phrases:
+        head = (phrase.head or "").rstrip("s") if phrase.head not in lexicon.private_things \
+            else phrase.head
+        possessor = phrase.possessor or ("her" if ambiguous_her else None)
+        if possessor and possessor not in _OWN and (
+                head in lexicon.private_things or phrase.head in lexicon.private_things):
+            return possessor
+    return None
+
+
 def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner: frozenset[str],
              lexicon: Lexicon) -> list[Declared]:
     """Every declared rule that fires on a command.
@@ -125,6 +151,11 @@ def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner:
             target = people[0] if people else None
             fire("covert_surveillance" if item.schema in ("record", "find", "spy", "go")
                  else "deception", item.clause.text, {"person": target} if target else {})
+    for item in grounded:
+        if item.schema in _READING and not item.clause.negated:
+            owner = _someone_elses_private_thing(item, lexicon)
+            if owner is not None:
+                fire("private_information", item.clause.text, {})
     for clause in conditions:
         if clause.kind == "purpose" and (harm_stated(clause.text, lexicon)
                                          or "harmful_purpose" in clause.manner):

@@ -74,6 +74,7 @@ class Lexicon:
     particles: frozenset[str]
     manner: dict[str, tuple[tuple[str, ...], ...]]
     harm_words: frozenset[str]
+    private_things: frozenset[str]
     rooms: dict[str, str]
     """room phrase -> canonical room name."""
     people: dict[str, PersonWord]
@@ -165,6 +166,7 @@ def load_lexicon() -> Lexicon:
         particles=frozenset(words["particles"]),
         manner={k: _phrases(v) for k, v in words["manner"].items()},
         harm_words=frozenset(words["harm_words"]),
+        private_things=frozenset(words["private_things"]),
         rooms=rooms,
         people=people,
         states=states,

@@ -87,6 +87,9 @@ def _strip_determiners(words: list[str], lexicon: Lexicon) -> tuple[list[str], f
 
 _QUANTIFIERS = frozenset({"some", "any", "all", "both", "each", "few", "a", "couple", "several",
                           "most", "none", "one", "many", "lots", "plenty", "more", "rest"})
+_TIME_OWNERS = frozenset({"today", "tonight", "yesterday", "tomorrow", "week", "weekend", "month",
+                          "year", "monday", "tuesday", "wednesday", "thursday", "friday",
+                          "saturday", "sunday", "last", "next", "this"})
 _TIME_UNITS = frozenset({"minute", "minutes", "min", "mins", "hour", "hours", "second",
                         "seconds", "day", "days", "night", "nights", "morning", "evening",
                         "week", "weeks", "while", "time"})
@@ -146,7 +149,9 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
             words = before or after
     for index, word in enumerate(words):
         if word.endswith(("'s", "s'")) and index < len(words) - 1:
-            possessor = word[:-2] if word.endswith("'s") else word[:-1]
+            owner = word[:-2] if word.endswith("'s") else word[:-1]
+            if owner not in _TIME_UNITS and owner not in _TIME_OWNERS:
+                possessor = owner  # "today's post" belongs to nobody
             words = words[index + 1:]
             break
     words = [w for w in words if w not in ("the", "a", "an")]
