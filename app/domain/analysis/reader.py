@@ -236,9 +236,10 @@ class Reader:
             if seq and words[index] == "next" and (words[index + seq: index + seq + 1] == [
                     "to"] or (index and words[index - 1] in _NEXT_AS_ADJECTIVE)):
                 seq = 0  # "next to the stove", "the next step": not the next instruction
-            if seq and (parts[-1][0] or index == 0):
-                parts.append(([], "step", None))
-                index += seq
+            if seq:
+                if parts[-1][0]:
+                    parts.append(([], "step", None))
+                index += seq  # ", then run out": the sequencer after a comma opens nothing new
                 continue
             if word in ("and", ",", "&") and (self._starts_clause(words, index + 1) or (
                     word == "," and self._elliptic_put(words[index + 1:]))):

@@ -169,7 +169,33 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     first_is_person = bool(objects) and objects[0].kind == "person"
     grounded.schema = _choose(clause, first_is_person, grounded.destination is not None)
     builder.sync()
+    _by_tool(builder, grounded)
     return grounded
+
+
+# A tool whose use is a task of its own: "run the hoover round the hall" is hoovering.
+_TOOL_SCHEMAS = {"vacuumcleaner": "vacuum", "vacuum": "vacuum", "hoover": "vacuum",
+                 "mop": "mop"}
+
+
+def _by_tool(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Choose between a verb's schemas by what it is applied to ("run the dishwasher"
+    switches it on; "run the hoover round" hoovers)."""
+    schemas, first = grounded.clause.schemas, grounded.objects[0] if grounded.objects else None
+    if first is None or first.kind != "object" or grounded.recipient is not None or len(
+            schemas) < 2 or grounded.schema not in ("fetch", "pick", "put"):
+        return
+    obj = builder.grounder.objects.get(first.id or "")
+    if obj is None:
+        return
+    tool = _TOOL_SCHEMAS.get(normalize_type(obj.kind.name)) or _TOOL_SCHEMAS.get(
+        normalize_type(first.phrase.head or ""))
+    if tool is not None:
+        grounded.schema = tool
+        grounded.objects = []
+    elif "switch_on" in schemas and (obj.kind.flag("toggleable") or obj.kind.trait(
+            "electrical")) and grounded.destination is None:
+        grounded.schema = "switch_on"
 
 
 def _contents_of_containers(grounded: Grounded, clause: Clause) -> None:
@@ -217,8 +243,13 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
     if schema is None or grounded.clause.negated:
         return
     handler = _HANDLERS.get(schema) or RECIPES.get(schema)
+    before = len(builder.sketch.literal)
     if handler is not None:
         handler(builder, grounded)
+    dest = grounded.destination
+    if len(builder.sketch.literal) == before and not grounded.objects and dest is not None \
+            and dest.ids and dest.kind == "room" and schema in ("fetch", "go", "pick"):
+        builder.go_to(dest.ids[0], kind="literal")  # "run out to the garage": go there
 
 
 def _ids(grounded: Grounded, kind: str = "object") -> list[str]:
