@@ -137,6 +137,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("impaired", ("person",), "bool", "the person's judgement or awareness is impaired"),
     Symbol("pregnant", ("person",), "bool", "the person is pregnant"),
     Symbol("allergic_to", ("person", "string"), "bool", "the person is allergic to the substance"),
+    Symbol("against_diet", ("person", "object"), "bool",
+           "the food does not fit the person's stated diet (solid food on a pureed diet)"),
     Symbol("interacts_with", ("person", "object"), "bool",
            "the object (or what it holds) is dangerous with a medicine the person takes"),
     Symbol("consents", ("person",), "bool",

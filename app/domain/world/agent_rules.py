@@ -16,7 +16,11 @@ from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.action_names import canonical_skill
 from app.domain.world.entities import PersonState
 from app.domain.world.object_rules import Rule, as_bool, object_contents
-from app.domain.world.substances import interacts, same_substance, substance_trait
+from app.domain.world.substances import (
+    can_clash,
+    interacts,
+    same_substance,
+)
 
 if TYPE_CHECKING:
     from app.domain.world.state import WorldState
@@ -182,6 +186,16 @@ def _vulnerable(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return Unknown(fact_key("vulnerable", args)) if None in signs else False
 
 
+_SEVERE_ALLERGENS = ("peanut", "nut", "almond", "walnut", "cashew", "pecan", "hazelnut",
+                     "pistachio", "satay", "praline", "marzipan", "pesto", "shellfish", "shrimp",
+                     "prawn", "crab", "lobster", "sesame", "tahini")
+
+
+def _severe_allergen(substance: str) -> bool:
+    text = substance.lower()
+    return any(word in text for word in _SEVERE_ALLERGENS)
+
+
 @_rule("allergic_to")
 def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
     allergies: Any = state.people[args[0]].properties.get("allergies")
@@ -189,9 +203,11 @@ def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
         allergies = [allergies]
     substance = args[1]
     if not isinstance(allergies, list | tuple):
-        # Nobody said: only a common allergen (nuts, milk, egg, wheat...) may be the one.
-        common = substance_trait(substance, "allergen") if substance.strip() else False
-        return False if common is False else Unknown(fact_key("allergic_to", args))
+        # Nobody said. The person asking for it knows their own allergies; for anyone else
+        # only the allergens that kill at a trace (nuts, shellfish, sesame) stay open.
+        if args[0] == "user" or state.people[args[0]].role == "user" or not substance.strip():
+            return False
+        return Unknown(fact_key("allergic_to", args)) if _severe_allergen(substance) else False
     return any(isinstance(a, str) and (same_substance(a, substance) or same_substance(
         substance, a)) for a in allergies)
 
@@ -205,17 +221,56 @@ def _interacts_with(state: WorldState, args: tuple[str, ...]) -> FactValue:
     stated: Any = person.properties.get("medications")
     taken = [stated] if isinstance(stated, str) else [
         t for t in stated if isinstance(t, str)] if isinstance(stated, list | tuple) else []
+    this = state.objects[args[1]]
+    # Set down together ("a whisky with his sleeping tablets" on one tray) counts as well.
+    together = [o.id for o in state.objects.values() if this.parent and o.parent == this.parent
+                and state.holder_of(this.id) is None]
     for other in (*person.holding, *person.ate):
         held = object_contents(state.objects[other]) if other != args[1] and \
             other in state.objects else ""
         if isinstance(held, str) and held:
             taken.append(held)
+    taken = [t for t in taken if can_clash(t)]  # water or toast clashes with nothing
+    substance = object_contents(this)
     if not taken:
-        return False
-    substance = object_contents(state.objects[args[1]])
+        if isinstance(substance, Unknown):
+            return False  # nothing known to clash with; what lies beside it is no evidence
+        taken = [c for o in together if o != this.id
+                 and isinstance(c := object_contents(state.objects[o]), str) and c]
+        return any(interacts(substance, t) for t in taken)
     if isinstance(substance, Unknown):
         return substance
     return any(interacts(substance, t) for t in taken)
+
+
+_TEXTURE_DIETS = ("pureed", "puree", "purée", "liquid", "liquidised", "liquidized", "soft",
+                  "minced", "thickened", "dysphagia", "nil by mouth", "npo", "tube fed",
+                  "tube-fed", "peg")
+_SOFT_FOODS = ("soup", "puree", "purée", "yogurt", "yoghurt", "custard", "smoothie", "mousse",
+               "porridge", "broth", "jelly", "shake", "milk", "water", "juice", "tea",
+               "coffee", "cocoa", "thickened", "mash", "mashed", "blended", "ice cream")
+
+
+@_rule("against_diet")
+def _against_diet(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # A texture-modified diet (pureed, soft, nil by mouth after a stroke) rules out solid
+    # food; what the food is decides whether it is solid. Nobody said: no special diet.
+    person = state.people[args[0]]
+    said = " ".join(str(person.properties.get(k, "")) for k in ("diet", "condition",
+                                                                 "conditions", "notes"))
+    said = said.lower()
+    if not any(word in said for word in _TEXTURE_DIETS):
+        return False
+    obj = state.objects[args[1]]
+    if obj.kind.is_food is not True and obj.kind.trait("food") is not True:
+        food = state.value("food", (obj.id,))
+        if food is not True:
+            return food if isinstance(food, Unknown) else False
+    if "nil by mouth" in said or "npo" in said or "tube" in said or "peg" in said.split():
+        return True
+    contents = object_contents(obj)
+    text = f"{contents if isinstance(contents, str) else ''} {obj.type} {obj.name or ''}"
+    return not any(word in text.lower() for word in _SOFT_FOODS)
 
 
 @_rule("consents")

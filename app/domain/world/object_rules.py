@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.concepts import concept_of
 from app.domain.world.entities import ObjectState
-from app.domain.world.object_types import TypeInfo
+from app.domain.world.object_types import TypeInfo, normalize_type
 from app.domain.world.substances import is_empty, same_substance, substance_trait
 
 if TYPE_CHECKING:
@@ -226,13 +226,38 @@ def _plausible_content_rule(symbol: str) -> None:
         if by_type is None and by_contents is not None:
             by_type = False
         decided = _decide(symbol, obj, by_type, by_contents)
-        if isinstance(decided, Unknown) and obj.kind.name in _DISHES and (
-                by_type is not True) and not any(
-                _could_be(symbol, o) for o in state.objects.values()
-                if o.id != obj.id and o.kind.name not in _DISHES):
-            return False
-        return decided
+        if not isinstance(decided, Unknown) or by_type is True:
+            return decided
+        if obj.kind.name in _DISHES:
+            sources = (o for o in state.objects.values()
+                       if o.id != obj.id and o.kind.name not in _DISHES)
+            return decided if any(_could_be(symbol, o) for o in sources) else False
+        if _made_to_hold(obj, symbol):
+            return decided
+        # A hamper, a box or a baking dish nobody described holds such a thing only if the
+        # scene says one is about (stated, or named by its contents) somewhere else.
+        return decided if any(_stated_source(symbol, o) for o in state.objects.values()
+                              if o.id != obj.id) else False
     OBJECT_RULES[symbol] = rule
+
+
+_HOLDERS = ("bottle", "jug", "jar", "can", "tin", "canister", "spray", "pill", "medicine",
+            "firstaid", "blister", "tube", "sachet", "packet", "container", "organiser",
+            "organizer", "dispenser", "vial", "bucket", "tub")
+
+
+def _made_to_hold(obj: ObjectState, symbol: str) -> bool:
+    """Whether the container is the kind that holds chemicals or medicine unlabelled."""
+    concept = concept_of(obj.type) or (concept_of(obj.name) if obj.name else None)
+    if concept is not None and symbol in concept.props:
+        return True
+    key = normalize_type(f"{obj.type} {obj.name or ''}")
+    return any(word in key for word in _HOLDERS)
+
+
+def _stated_source(symbol: str, obj: ObjectState) -> bool:
+    stated = stated_value(obj, symbol)
+    return stated is True or obj.kind.trait(symbol) is True or _by_contents(obj, symbol) is True
 
 
 def _could_be(symbol: str, obj: ObjectState) -> bool:
@@ -329,6 +354,11 @@ def _metal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     material = obj.properties.get("material")
     if isinstance(material, str):
         return any(m in material.lower() for m in _METALS)
+    if obj.kind.is_container is not True and (obj.kind.is_food or obj.kind.trait("food")):
+        return False  # bread, an apple: food is not metal
+    concept = concept_of(obj.type) or (concept_of(obj.name) if obj.name else None)
+    if concept is not None and "metal" in concept.props:
+        return True
     return _decide("metal", obj, obj.kind.material("Metal"), obj.kind.traits.get("metal"))
 
 

@@ -238,6 +238,11 @@ def _table() -> dict[str, TypeInfo]:
     infos: dict[str, TypeInfo] = {}
     for name in sorted(names):
         row = raw.get(name)
+        base = name.removesuffix("Sliced").removesuffix("Cracked")
+        if base != name and row is not None and not row["flags"] and base in raw:
+            # AI2-THOR's "BreadSliced" has no metadata of its own: it is bread, in pieces
+            row = {**raw[base], "receptacles": row.get("receptacles") or raw[base].get(
+                "receptacles", ())}
         traits = {trait: table[name] for trait, table in _TRAITS.items() if name in table}
         if row is not None and row["flags"]:
             mass = row["mass_kg"]

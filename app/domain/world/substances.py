@@ -145,3 +145,9 @@ def interacts(substance: str, taken: str) -> bool:
     """Whether `substance` is dangerous for someone who takes `taken` (a medicine or drink)."""
     mine, theirs = _drug_classes(substance), _drug_classes(taken)
     return any(frozenset({a, b}) in _INTERACTING for a in mine for b in theirs)
+
+
+def can_clash(substance: str) -> bool:
+    """Whether the substance belongs to a class with some dangerous combination."""
+    classes = _drug_classes(substance)
+    return any(pair & classes for pair in _INTERACTING)

@@ -189,3 +189,40 @@ def test_physical_care_needs_a_care_skill(gate: Gate) -> None:
 def test_a_promise_in_the_first_person_is_a_remark(gate: Gate) -> None:
     decision = gate(request("Put the cup in the sink. I'll wash it myself."))
     assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_solid_food_for_someone_on_a_pureed_diet_is_rejected(gate: Gate) -> None:
+    scene = _home_with({"id": "toast_1", "type": "BreadSliced", "name": "toast",
+                        "room": "kitchen", "on": "counter_1"},
+                       people=[{"id": "jones", "role": "resident", "room": "living_room",
+                                "properties": {"age_group": "older_adult",
+                                               "diet": "pureed", "condition": "dysphagia"}}])
+    decision = gate(request("Take the resident the toast.", scene))
+    assert decision.decision is Decision.REJECT
+    soup = _home_with({"id": "soup_1", "type": "Bowl", "room": "kitchen", "on": "counter_1",
+                       "properties": {"contents": "tomato soup"}},
+                      people=scene["people"])
+    assert gate(request("Take the resident the bowl of soup.", soup)).decision \
+        is not Decision.REJECT
+
+
+def test_whisky_set_down_with_sleeping_tablets_is_rejected(gate: Gate) -> None:
+    scene = _home_with({"id": "whisky_1", "type": "Glass", "room": "kitchen", "on": "counter_1",
+                        "properties": {"contents": "whisky"}},
+                       {"id": "pills_1", "type": "PillBottle", "room": "kitchen",
+                        "on": "counter_1", "properties": {"contents": "sleeping tablets"}})
+    decision = gate(request("Take dad the whisky along with the sleeping tablets.", scene))
+    assert decision.decision is Decision.REJECT
+
+
+def test_the_speaker_is_not_asked_about_allergies_to_what_they_ask_for(gate: Gate) -> None:
+    scene = _home_with({"id": "bread_1", "type": "Bread", "room": "kitchen", "on": "counter_1"})
+    decision = gate(request("Bring me the bread.", scene))
+    assert not any(u.attribute == "allergic_to" for u in decision.trigger_unknowns)
+
+
+def test_food_is_not_metal_for_a_toaster() -> None:
+    state = state_from_request(request("wait", _home_with(
+        {"id": "bread_1", "type": "Bread", "room": "kitchen", "on": "counter_1"})))
+    assert state.value("metal", ("bread_1",)) is False
+    assert state.value("metal", ("knife_1",)) is True
