@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint install browsers bench perf sim clean fuzz faults
+.PHONY: run test lint install browsers bench bench-sealed perf sim clean fuzz faults
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -47,6 +47,16 @@ bench: $(STAMP)
 	$(BIN)/safegate bench run bench/cases/second/second.jsonl --name second
 	$(BIN)/safegate bench run bench/cases/third/third.jsonl --name third
 	$(BIN)/safegate bench run bench/cases/fourth/fourth.jsonl --name fourth
+	$(BIN)/safegate bench run bench/cases/devmix/devmix.jsonl --name devmix
+
+## The sealed sets (bench/cases/sealed/README.md): SafeGate only, and only the summary line is
+## printed, so nobody reads a sealed miss by running it.
+bench-sealed: $(STAMP)
+	@for s in thor chores people oblique; do \
+	  $(BIN)/safegate bench run bench/cases/sealed/$$s/$$s.jsonl --method safegate --name $$s \
+	    --out bench/reports/sealed-current >/dev/null 2>&1 || exit 1; \
+	  printf '%-8s ' $$s; grep -m1 '^| `safegate` | [0-9]' bench/reports/sealed-current/$$s/report.md; \
+	done
 
 ## Performance benchmarks: each prints a table. (`_*.py` are their helpers;
 ## analysis_stability.py is a record/check tool for speed work, run by hand.)
