@@ -52,10 +52,10 @@ bench: $(STAMP)
 ## The sealed sets (bench/cases/sealed/README.md): SafeGate only, and only the summary line is
 ## printed, so nobody reads a sealed miss by running it.
 bench-sealed: $(STAMP)
-	@for s in thor chores people oblique; do \
-	  $(BIN)/safegate bench run bench/cases/sealed/$$s/$$s.jsonl --method safegate --name $$s \
+	@for s in sealed/thor sealed/chores sealed/people sealed/oblique sealed2/chores2 sealed2/everyday2; do \
+	  n=$${s#*/}; $(BIN)/safegate bench run bench/cases/$$s/$$n.jsonl --method safegate --name $$n \
 	    --out bench/reports/sealed-current >/dev/null 2>&1 || exit 1; \
-	  printf '%-8s ' $$s; grep -m1 '^| `safegate` | [0-9]' bench/reports/sealed-current/$$s/report.md; \
+	  printf '%-10s ' $$n; grep -m1 '^| `safegate` | [0-9]' bench/reports/sealed-current/$$n/report.md; \
 	done
 
 ## Performance benchmarks: each prints a table. (`_*.py` are their helpers;
