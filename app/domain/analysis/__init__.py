@@ -10,7 +10,10 @@ In: a `GateRequest` and the active Hazard Template Library. Out: a `HazardReport
    careful variant still breaks is unpreventable, what only others break is preventable, and a
    condition that depends on an unknown fact about the task's own entities makes that fact a
    critical unknown with a question.
-4. Declared rules (`declared.py`) for what no trace shows: intent, covert recording, deception.
+4. Coverage (`coverage.py`): a hazard class the traces put in play (a blade in hand, something
+   flammable heated) with no active template of its class stays unbound, so the gate asks for
+   the library to be extended instead of authorizing what nothing judged.
+5. Declared rules (`declared.py`) for what no trace shows: intent, covert recording, deception.
 Fails: never for a valid request (the pipeline turns any exception into a deferral anyway).
 """
 
@@ -21,6 +24,7 @@ from typing import Protocol, runtime_checkable
 
 from app.domain.analysis.aggregate import aggregate
 from app.domain.analysis.answers import apply_answers
+from app.domain.analysis.coverage import uncovered
 from app.domain.analysis.declared import RULES, Declared
 from app.domain.analysis.grounding import USER_ID
 from app.domain.analysis.judge import Focus, judge
@@ -108,6 +112,7 @@ class SymbolicAnalyzer:
             findings = judge(traces, active, focus, self._library)
             matrix = aggregate(findings, traces, focus, self._theta, USER_ID)
             proposals += matrix.proposals
+            proposals += uncovered(traces, focus, library)
             unknowns += matrix.unknowns
         proposals += [_declared_proposal(d, library) for d in read.fired]
         if not steps and not read.fired and not unknowns:
