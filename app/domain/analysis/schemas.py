@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from app.domain.analysis.grounding import Referent
+from app.domain.analysis.grounding import Grounder, Referent
 from app.domain.analysis.phrases import NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.recipes import RECIPES
@@ -115,6 +115,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     g = builder.grounder
     before, before_single = g.last_object, g.last_single
     objects = [g.any(np) for np in clause.objects if not _setting(np)]
+    objects = [_switchable_pronoun(g, clause, ref) for ref in objects]
     own = {i for r in objects for i in r.ids}
     if before and own and not own & set(before):
         g.last_object, g.last_single = before, before_single  # "pour water on it": not the water
@@ -171,6 +172,24 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     builder.sync()
     _by_tool(builder, grounded)
     return grounded
+
+
+def _switchable_pronoun(g: Grounder, clause: Clause, ref: Referent) -> Referent:
+    """ "Put the potato in the microwave and turn it on": a pronoun points to what the verb can
+    apply to; a potato cannot be switched on, the place it was put in can."""
+    if ref.phrase.pronoun not in ("it", "this", "that") or ref.kind != "object" or not (
+            set(clause.schemas) & {"switch_on", "switch_off"}) or g.last_place is None:
+        return ref
+    place = g.last_place
+    if any(_switchable(g, i) for i in ref.ids) or place.kind != "object" or not place.ids \
+            or not all(_switchable(g, i) for i in place.ids):
+        return ref
+    return Referent(ref.phrase, "object", place.ids)
+
+
+def _switchable(g: Grounder, obj_id: str) -> bool:
+    obj = g.objects.get(obj_id)
+    return obj is not None and bool(obj.kind.flag("toggleable") or obj.kind.flag("heat_source"))
 
 
 # A tool whose use is a task of its own: "run the hoover round the hall" is hoovering.
