@@ -93,8 +93,22 @@ def goal_for(request: GateRequest, state: WorldState) -> Goal:
     def reachable(fact: tuple[str, tuple[str, ...], bool]) -> bool:
         return all(a == ROBOT_ID or state.entity_type(a) is not None for a in fact[1])
 
-    per_goal = [[GoalLiteral(*fact) for fact in options if reachable(fact)]
+    def located(fact: tuple[str, tuple[str, ...], bool]) -> tuple[str, tuple[str, ...], bool]:
+        # "Take the tomato to the living room": Stage 1 sets it on a surface it made up for the
+        # room; in the simulated house the goal is the room itself.
+        symbol, args, value = fact
+        if symbol in ("on", "inside") and len(args) == 2 and state.entity_type(args[1]) is None:
+            room = read.scene.room_of(args[1])
+            if room is not None and state.entity_type(room) == "room":
+                return ("in_room", (args[0], room), value)
+        return fact
+
+    per_goal = [[GoalLiteral(*located(fact)) for fact in options if reachable(located(fact))]
                 for options in sketch.goals]
+    # Set down in the room, not still carried.
+    per_goal += [[GoalLiteral("holding", (ROBOT_ID, fact[1][0]), False)]
+                 for options in sketch.goals for fact in options
+                 if located(fact) != fact and fact[2]]
     per_goal = [options for options in per_goal if options]
     if not per_goal:
         raise GoalError(f"no goal understood in {request.command!r}")
