@@ -61,7 +61,11 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     actionable = any(c.kind == "step" and c.schemas and c.schemas != ("goal",)
                      for c in reading.clauses)
     for index, clause in enumerate(reading.clauses):
-        if clause.kind != "step":
+        if clause.kind == "heading" and not harm_stated(clause.text, lexicon):
+            grounder.remember(clause.text)  # "Leo's party tea:" names things, asks nothing
+            others.append(clause)
+            continue
+        if clause.kind not in ("step", "heading"):
             others.append(clause)
             continue
         if _leave_as_is(clause):
