@@ -137,6 +137,25 @@ def _assured(words: list[str]) -> list[str]:
     return words
 
 
+_SETTINGS = frozenset({"high", "low", "medium", "full", "max", "maximum", "min", "minimum",
+                       "medium-high", "medium-low", "full-whack", "simmer"})
+
+
+def _heat_setting(verb: str, rest: list[str]) -> tuple[str, list[str]]:
+    """ "put it on high", "turn the pan to medium", "the casseroles in at 220": a heat setting
+    names heating, not a place to put things."""
+    for at, word in enumerate(rest):
+        after = rest[at + 1: at + 3]
+        setting = after[:1] and (after[0] in _SETTINGS or (after[0].isdigit() and int(
+            after[0]) >= 50) or after == ["gas", "mark"])
+        if word in ("on", "to", "at") and setting:
+            kept = rest[:at]
+            while kept and kept[-1] in ("in", "on", "into"):
+                kept.pop()  # "in at 220": in the oven the setting implies
+            return "heat", kept
+    return verb, rest
+
+
 def _titles(clause: Clause, words: list[str]) -> bool:
     """Whether a clause before a colon (or a first dash) is a title: a few words naming no
     action ("End of day job:", "Milk time -"), not an order in words the robot lacks."""
@@ -450,6 +469,9 @@ class Reader:
         if not words:
             return None
         verb, rest = self._verb(words)
+        if verb is not None and (lexicon.schemas_of(verb)[:1] == ("put",)
+                                 or verb in ("turn", "set", "switch", "crank")):
+            verb, rest = _heat_setting(verb, rest)
         if verb is not None and words[0] != lexicon.lemma(words[0]) and words[0].endswith("s"):
             # An imperative verb is never inflected: "lights off downstairs" names lights.
             directive = self._verbless_directive(words)
@@ -481,6 +503,10 @@ class Reader:
         rest = words[1:]
         # A particle after the object: "turn the stove on", "put the kettle on".
         for index, word in enumerate(rest):
+            if index and word == "back" and rest[index + 1: index + 2] and lexicon.schemas_of(
+                    f"{first} {rest[index + 1]}")[:1] == ("close",):
+                # "screw the cap back on the bottle": screw on, and on the bottle
+                return f"{first} {rest[index + 1]}", rest[:index] + rest[index + 1:]
             if word in ("and", ",") or (index and word not in lexicon.particles and _match(
                     rest, index, lexicon.prepositions)):
                 break

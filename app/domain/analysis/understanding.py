@@ -107,6 +107,11 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
 _CONTRACTION = re.compile(r"'(ll|re|ve|d|m|s|t)\b")
 _KEEP_STATES = frozenset({"going", "on", "running", "burning", "lit", "open", "charging",
                           "hot", "warm", "plugged"})
+_STILL_RUNNING = frozenset({"heats", "heating", "cooks", "cooking", "boils", "boiling",
+                            "warms", "warming", "bakes", "baking", "simmers", "simmering",
+                            "fills", "filling", "runs", "running", "charges", "charging",
+                            "defrosts", "defrosting", "thaws", "preheats", "preheating",
+                            "roasts", "roasting", "fries", "frying"})
 _RETURN_WORDS = frozenset({"back", "home", "return", "returns", "get", "later", "morning",
                            "overnight", "tomorrow", "tonight"})
 
@@ -120,6 +125,9 @@ def _kept_going(clauses: tuple[Clause, ...]) -> bool:
         if clause.kind == "step" and clause.verb in ("keep", "leave") and (
                 clause.complement in _KEEP_STATES or words & _KEEP_STATES):
             return True
+        if clause.kind == "condition" and clause.opener in ("while", "whilst") and \
+                words & _STILL_RUNNING:
+            return True  # "go hoover upstairs while it heats up": it runs while the robot is away
         if clause.kind in ("condition", "purpose"):
             returning = returning or (bool(words & _RETURN_WORDS) and clause.opener in (
                 "till", "until", "when", "so", "so that", "for when"))
