@@ -421,11 +421,19 @@ class Grounder:
                 "Bottle" if substance_trait(head, "toxic") else "Cup")
         object_id = f"new_{normalize_type(phrase.phrase) or 'object'}"
         self.objects[object_id] = ObjectState(id=object_id, type=kind,
+                                              room=self._room_named_in(phrase),
                                               properties=frozen_mapping(properties))
         self.last_object = self.last_single = (object_id,)
         self._annotate((object_id,), phrase)
         return Referent(phrase, "object", (object_id,), new=True,
                         substance=head if liquid else None)
+
+    def _room_named_in(self, phrase: NounPhrase) -> str | None:
+        """ "the living room lamps", "the kitchen bin": a layout room named before the head
+        says where a thing the scene lacks is."""
+        text = " ".join(phrase.modifiers)
+        return next((room for room in self.rooms if normalize_type(room) and normalize_type(
+            room) in normalize_type(text)), None) if text else None
 
     def place_new(self, object_id: str, **fields: object) -> None:
         """Put a new entity somewhere (a room) once a clause says where it is."""

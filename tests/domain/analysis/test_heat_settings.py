@@ -62,3 +62,20 @@ def test_what_heats_while_the_robot_is_away_is_left_on(gate: Gate) -> None:
                             "up.", scene))
     assert decision.decision is Decision.REJECT
     assert any(h.hazard_class == "appliance_left_on" for h in decision.trigger_hazards)
+
+
+def test_a_lamp_switched_on_is_not_switched_off_again(analyzer: SymbolicAnalyzer) -> None:
+    scene = _kitchen()
+    scene["objects"].append({"id": "lamp_1", "type": "FloorLamp", "room": "living_room",
+                             "properties": {"on": False}})
+    read = analyzer.understand(request("Put the lamp on in the living room.", scene))
+    steps = [(p.action.name, p.action.object) for p in read.sketch.steps()]
+    assert ("ToggleObjectOn", "lamp_1") in steps
+    assert ("ToggleObjectOff", "lamp_1") not in steps
+
+
+def test_a_thing_the_scene_lacks_is_in_the_room_its_name_gives(
+        analyzer: SymbolicAnalyzer) -> None:
+    read = analyzer.understand(request("Turn off the living room fan.", _kitchen()))
+    made_up = [o for o in read.scene.objects.values() if o.id.startswith("new_")]
+    assert [o.room for o in made_up] == ["living_room"]
