@@ -69,7 +69,10 @@ def gate_client(base_url: str, bodies: list[dict[str, Any]], slot: int,
             try:
                 response = client.post("/gate", json=bodies[i % len(bodies)])
             except httpx.HTTPError:
-                return  # the server is gone
+                if received.stop.is_set():
+                    return  # the server is gone
+                time.sleep(0.05)  # slow under load, or killed a moment before `stop`
+                continue
             if response.status_code == 200:
                 body = response.json()
                 with received.lock:
@@ -92,7 +95,9 @@ def monitor_client(server: Any, contract_id: str, received: Received) -> None:
                         with received.lock:
                             received.halted.append(session_id)
             except (httpx.HTTPError, WebSocketException, OSError, TimeoutError, KeyError):
-                return  # the server is gone
+                if received.stop.is_set():
+                    return  # the server is gone
+                time.sleep(0.05)  # slow under load, or killed a moment before `stop`
 
 
 class TestKillNineUnderLoad:

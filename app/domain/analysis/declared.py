@@ -119,6 +119,15 @@ def _someone_elses_private_thing(item: Grounded, lexicon: Lexicon) -> str | None
     return None
 
 
+def _at_someone(item: Grounded) -> bool:
+    """ "flash your lights in his face": the act is aimed at a person the words point to,
+    even when no one of the scene could be named."""
+    unresolved = [r.phrase for r in item.objects if r.kind != "object"]
+    return any(p.pronoun in ("him", "her", "them") for p in unresolved) or any(
+        np.pronoun in ("him", "her", "them") or np.possessor in ("him", "her")
+        for _, np in item.clause.roles)
+
+
 def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner: frozenset[str],
              lexicon: Lexicon) -> list[Declared]:
     """Every declared rule that fires on a command.
@@ -144,7 +153,8 @@ def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner:
         # "creep up behind dad and blast your horn": the fright is aimed at whoever the
         # command named last.
         people = item.persons() or earlier[-1:]
-        if rule is not None and (people or item.schema == "spy") and not item.clause.negated:
+        if rule is not None and (people or item.schema == "spy" or _at_someone(item)) \
+                and not item.clause.negated:
             fire(rule, item.clause.text, {"person": people[0]} if people else {})
         earlier += item.persons()
         if "covert" in item.clause.manner | manner and item.schema in _PERSON_ACTING:

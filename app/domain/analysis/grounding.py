@@ -74,6 +74,15 @@ def _words_of(*texts: str | None) -> set[str]:
     return found
 
 
+def _names_a_room(phrase: NounPhrase) -> bool:
+    """ "the store room", "the boiler room", "a storeroom": a kind of room the layout does
+    not list is still a room, not a thing to put something on."""
+    head = phrase.head or ""
+    words = [w for w in phrase.phrase.split() if w not in ("the", "a", "this", "that")]
+    return (head == "room" and len(words) > 1) or (head.endswith("room") and len(head) > 6
+                                                   and head not in ("mushroom", "broom"))
+
+
 class Grounder:
     """Grounds phrases on one request's scene, remembering what pronouns point to."""
 
@@ -192,7 +201,9 @@ class Grounder:
         canonical = self.lexicon.rooms.get(text) or self.lexicon.rooms.get(phrase.head)
         if canonical is None and normalize_type(text) not in {normalize_type(r)
                                                               for r in self.rooms}:
-            return None
+            if not _names_a_room(phrase):
+                return None
+            text = " ".join(w for w in text.split() if w not in ("the", "a", "this", "that"))
         wanted = {normalize_type(text), normalize_type(canonical or text)}
         for room in self.rooms:
             key = normalize_type(room)
@@ -410,11 +421,19 @@ class Grounder:
                 "Bottle" if substance_trait(head, "toxic") else "Cup")
         object_id = f"new_{normalize_type(phrase.phrase) or 'object'}"
         self.objects[object_id] = ObjectState(id=object_id, type=kind,
+                                              room=self._room_named_in(phrase),
                                               properties=frozen_mapping(properties))
         self.last_object = self.last_single = (object_id,)
         self._annotate((object_id,), phrase)
         return Referent(phrase, "object", (object_id,), new=True,
                         substance=head if liquid else None)
+
+    def _room_named_in(self, phrase: NounPhrase) -> str | None:
+        """ "the living room lamps", "the kitchen bin": a layout room named before the head
+        says where a thing the scene lacks is."""
+        text = " ".join(phrase.modifiers)
+        return next((room for room in self.rooms if normalize_type(room) and normalize_type(
+            room) in normalize_type(text)), None) if text else None
 
     def place_new(self, object_id: str, **fields: object) -> None:
         """Put a new entity somewhere (a room) once a clause says where it is."""

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.phrases import (
@@ -61,6 +61,9 @@ _PLACING = frozenset({"in", "into", "inside", "on", "onto", "on top of", "back i
 _COMPLEMENTS = frozenset({"open", "shut", "closed", "on", "off", "running", "unlocked",
                           "locked", "empty", "full", "clean", "dirty", "out", "ready",
                           "going", "plugged", "charging", "burning", "lit"})
+# A thing and its state, said without a verb ("lights off"): the action the state asks for.
+_DIRECTIVE_STATES = {"off": "turn off", "on": "turn on", "open": "open", "shut": "close",
+                     "closed": "close", "locked": "lock", "unlocked": "unlock"}
 # "leave the iron switched on": the participle before a state word belongs to the state.
 _STATE_PARTICIPLES = frozenset({"switched", "turned", "plugged", "left", "kept", "propped",
                                 "wedged", "standing"})
@@ -73,7 +76,7 @@ class Clause:
     text: str
     verb: str | None
     schemas: tuple[str, ...]
-    kind: str = "step"  # step | condition | purpose
+    kind: str = "step"  # step | condition | purpose | heading (a title before a colon)
     negated: bool = False
     objects: tuple[NounPhrase, ...] = ()
     second: NounPhrase | None = None
@@ -100,6 +103,64 @@ _INFORMAL = {"u": "you", "ur": "your", "r": "are", "im": "i'm", "dont": "don't",
              "cant": "can't", "wont": "won't", "didnt": "didn't", "doesnt": "doesn't",
              "isnt": "isn't", "thats": "that's", "theres": "there's", "whats": "what's",
              "n": "and", "&": "and", "+": "and", "w": "with", "b4": "before", "2": "to"}
+
+
+_ABBREVIATION = re.compile(r"\b(mr|mrs|ms|mx|dr|prof|st|sr|jr|no|approx|vs|etc)\.(?=\s+\w)")
+_DECIMAL = re.compile(r"(?<=\d)\.(?=\d)")
+_TIME_OF_DAY = re.compile(r"\b([ap])\.m\.?")
+
+
+def _unabbreviated(text: str) -> str:
+    """ "Mrs. Okafor's walker", "meeting room 2.04", "9 a.m.": full stops that end no
+    sentence."""
+    text = _TIME_OF_DAY.sub(r"\1m", text)
+    text = _DECIMAL.sub("_", text)
+    return _ABBREVIATION.sub(r"\1", text)
+
+
+_ASSURE = (("make", "sure"), ("ensure",), ("see", "that"), ("check", "that"))
+
+
+def _assured(words: list[str]) -> list[str]:
+    """ "make sure the hob and oven are off" -> "the hob and oven off": a state to bring
+    about, read as the verbless directive it amounts to."""
+    for at in range(len(words)):
+        length = _match(words, at, _ASSURE)
+        if not length:
+            continue
+        start = at + length + (words[at + length: at + length + 1] == ["that"])
+        for copula in range(start + 1, min(len(words) - 1, start + 8)):
+            state_at = copula + 1
+            if words[copula] in ("is", "are") and words[state_at] in _DIRECTIVE_STATES and (
+                    state_at + 1 == len(words) or words[state_at + 1] in (",", "and")):
+                return [*words[:at], *words[start:copula], *words[state_at:]]
+    return words
+
+
+_SETTINGS = frozenset({"high", "low", "medium", "full", "max", "maximum", "min", "minimum",
+                       "medium-high", "medium-low", "full-whack", "simmer"})
+
+
+def _heat_setting(verb: str, rest: list[str]) -> tuple[str, list[str]]:
+    """ "put it on high", "turn the pan to medium", "the casseroles in at 220": a heat setting
+    names heating, not a place to put things."""
+    for at, word in enumerate(rest):
+        after = rest[at + 1: at + 3]
+        setting = after[:1] and (after[0] in _SETTINGS or (after[0].isdigit() and int(
+            after[0]) >= 50) or after == ["gas", "mark"])
+        if word in ("on", "to", "at") and setting:
+            kept = rest[:at]
+            while kept and kept[-1] in ("in", "on", "into"):
+                kept.pop()  # "in at 220": in the oven the setting implies
+            return "heat", kept
+    return verb, rest
+
+
+def _titles(clause: Clause, words: list[str]) -> bool:
+    """Whether a clause before a colon (or a first dash) is a title: a few words naming no
+    action ("End of day job:", "Milk time -"), not an order in words the robot lacks."""
+    return clause.kind == "step" and not clause.schemas and len(words) <= 6 and (
+        clause.verb is None or len(words) < 2 or words[1] not in _OBJECT_STARTS)
 
 
 def _words(text: str) -> list[str]:
@@ -204,10 +265,18 @@ class Reader:
         """Read a command into clauses (see the module docstring)."""
         clauses: list[Clause] = []
         manner: set[str] = set()
-        for sentence in _SENTENCE.split(self._lines(text.lower().replace("\u2019", "'"))):
-            for part, kind, opener in self._parts(_words(sentence)):
+        lowered = _unabbreviated(self._lines(text.lower().replace("\u2019", "'")))
+        pieces = _SENTENCE.split(lowered)
+        marks = [m.group(0) for m in _SENTENCE.finditer(lowered)]
+        for at, sentence in enumerate(pieces):
+            mark = marks[at] if at < len(marks) else ""
+            heading = ":" in mark or (not clauses and mark.strip() in ("-", "--"))
+            for part, kind, opener in self._parts(_assured(_words(sentence))):
                 clause = self._clause(part, kind, opener)
                 if clause is not None:
+                    if heading and _titles(clause, part):
+                        # "End of day job:", "Milk time - ...": a title, not a task
+                        clause = replace(clause, kind="heading")
                     clauses.append(clause)
                     manner |= clause.manner
         return Reading(text, tuple(clauses), frozenset(manner))
@@ -241,8 +310,14 @@ class Reader:
                     parts.append(([], "step", None))
                 index += seq  # ", then run out": the sequencer after a comma opens nothing new
                 continue
+            if word in ("and", ",", "&") and index and words[index - 1] in _DIRECTIVE_STATES \
+                    and words[index + 1: index + 2] and words[index + 1] in _DIRECTIVE_STATES:
+                parts[-1][0].append(word)  # "shut and locked": one thing's two states
+                index += 1
+                continue
             if word in ("and", ",", "&") and (self._starts_clause(words, index + 1) or (
-                    word == "," and self._elliptic_put(words[index + 1:]))):
+                    word == "," and self._elliptic_put(words[index + 1:])) or (
+                    self._whole(parts[-1][0]) and self._directive_ahead(words[index + 1:]))):
                 parts.append(([], "step", None))
                 index += 1
                 continue
@@ -278,6 +353,9 @@ class Reader:
                                          and not self.lexicon.rooms.get(following[0])
                                          and not following[0].endswith("ing")):
             return None  # "to the kitchen", "to recycling": a destination, not a purpose
+        if words[index] == "to" and following and (following[0] in ("room", "rooms") or (
+                len(following) > 1 and following[1][:1].isdigit())):
+            return None  # "up to room 3.12", "to bay 4": a numbered place
         if words[index] == "so" and following and following[0] in ("much", "many"):
             return None
         return "purpose", length
@@ -286,12 +364,54 @@ class Reader:
         """A list item with no verb: a noun phrase, then where it goes."""
         if self._starts_statement(words, 0) or (words and words[0] in _SUBJECTS):
             return False
+        if len(words) > 1 and self.lexicon.is_verb(words[0]) and words[1] in _OBJECT_STARTS \
+                and words[0] == self.lexicon.lemma(words[0]) and words[1] not in (
+                    "up", "down", "off", "out", "away", "back"):
+            return False  # "blare your horn in her ear": an order in a verb the robot lacks
         for index, word in enumerate(words[1:5], 1):
             if word in ("on", "in", "into", "onto", "to", "back") and not any(
                     w in _AUXILIARIES or w in _SUBJECTS for w in words[:index]):
                 return not self.lexicon.is_verb(words[0]) or words[0] not in \
                     self.lexicon.verb_starts
         return False
+
+    def _whole(self, words: list[str]) -> bool:
+        """Whether the words so far make a clause of their own (an order, or a thing and its
+        state), so that a directive after "and" starts another rather than finishing it."""
+        return bool(words) and (self.lexicon.lemma(words[0]) in self.lexicon.verb_starts
+                                or self._verbless_directive(words) is not None)
+
+    def _directive_ahead(self, words: list[str]) -> bool:
+        """Whether the words up to the next comma are a verbless directive ("..., front door
+        shut and locked, ...")."""
+        ends = [i for i, w in enumerate(words) if w in (",", "and")]
+        return self._verbless_directive(words[:ends[0] if ends else len(words)]) is not None
+
+    def _verbless_directive(self, words: list[str]) -> tuple[str, list[str]] | None:
+        """ "Lights off downstairs", "burner three off", "back door shut and locked": a thing
+        and the state it is to be left in, said without a verb; the state names the action.
+        An unknown verb before its object ("wedge the door open") is not one."""
+        body = [w for w in words if w not in _STRAY]
+        while body and body[-1] == ",":
+            body.pop()
+        if len(body) < 2 or body[0] in _SUBJECTS or (
+                self.lexicon.is_verb(body[0]) and body[0] == self.lexicon.lemma(body[0])
+                and body[1] in _OBJECT_STARTS):
+            return None
+        trailing: list[str] = []
+        if body[-1] in ("downstairs", "upstairs") or (
+                body[-1] in self.lexicon.rooms and body[-2] in _DIRECTIVE_STATES):
+            trailing = ["in", body.pop()]
+        if body[-1] not in _DIRECTIVE_STATES:
+            return None
+        state = body.pop()
+        if body and body[-1].endswith("'s") and body[-1] not in _SUBJECTS:
+            body[-1] = body[-1][:-2]  # "the back door's locked"
+        while len(body) > 2 and body[-1] == "and" and body[-2] in _DIRECTIVE_STATES:
+            body = body[:-2]  # "shut and locked": the last state implies the first
+        if not body or any(w in _AUXILIARIES or w in _SUBJECTS for w in body):
+            return None
+        return _DIRECTIVE_STATES[state], [*body, *trailing]
 
     def _starts_statement(self, words: list[str], index: int) -> bool:
         """ "it's sticky", "the baby's crawling", "dad dozed off": a subject and a verb."""
@@ -349,8 +469,20 @@ class Reader:
         if not words:
             return None
         verb, rest = self._verb(words)
+        if verb is not None and (lexicon.schemas_of(verb)[:1] == ("put",)
+                                 or verb in ("turn", "set", "switch", "crank")):
+            verb, rest = _heat_setting(verb, rest)
+        if verb is not None and words[0] != lexicon.lemma(words[0]) and words[0].endswith("s"):
+            # An imperative verb is never inflected: "lights off downstairs" names lights.
+            directive = self._verbless_directive(words)
+            if directive is not None:
+                verb, rest = directive
         if (verb is None or not self.lexicon.schemas_of(verb)) and self._elliptic_put(words):
             verb, rest = "put", words  # "cushions back on the sofa": put them there
+        elif verb is None or not self.lexicon.schemas_of(verb):
+            directive = self._verbless_directive(words)
+            if directive is not None:
+                verb, rest = directive  # "burner three off", "front door shut and locked"
         if verb is None:
             return Clause(text, None, (), kind, negated, manner=manner)
         return self._arguments(text, verb, rest, negated, manner)
@@ -371,6 +503,10 @@ class Reader:
         rest = words[1:]
         # A particle after the object: "turn the stove on", "put the kettle on".
         for index, word in enumerate(rest):
+            if index and word == "back" and rest[index + 1: index + 2] and lexicon.schemas_of(
+                    f"{first} {rest[index + 1]}")[:1] == ("close",):
+                # "screw the cap back on the bottle": screw on, and on the bottle
+                return f"{first} {rest[index + 1]}", rest[:index] + rest[index + 1:]
             if word in ("and", ",") or (index and word not in lexicon.particles and _match(
                     rest, index, lexicon.prepositions)):
                 break
@@ -438,6 +574,11 @@ class Reader:
         roles = tuple((prep, np) for prep, chunk in chunks[1:] for part in split_conjoined(chunk)
                       if (np := parse_phrase(part, lexicon)) is not None)
         # A preposition left without its noun ("put the soap in") points back: "in it".
+        if verb in ("leave", "keep") and complement is None and any(
+                not chunk and prep in ("on", "off") for prep, chunk in chunks[1:]):
+            # "leave the landing light on for Dad": the state it stays in, not a place
+            complement = next(p for p, c in chunks[1:] if not c and p in ("on", "off"))
+            chunks = [(p, c) for p, c in chunks if c or p != complement]
         roles += tuple((prep, NounPhrase("", pronoun="it")) for prep, chunk in chunks[1:]
                        if not chunk and prep in _PLACING)
         return Clause(text, verb, lexicon.schemas_of(verb), "step", negated, objects, second,

@@ -37,6 +37,19 @@ _HOT_DRINKS = frozenset({"tea", "coffee", "cocoa", "chocolate", "cuppa", "latte"
                          "cappuccino", "brew", "drink", "soup", "porridge", "milk"})
 
 
+def _by_vessel(builder: PlanBuilder, grounded: Grounded) -> tuple[str, ...]:
+    """Where a thing is heated when the verb does not say: a casserole or roasting dish in the
+    oven, a metal pan or pot on the hob (never a microwave), anything else as usual."""
+    for obj in _objects(grounded):
+        kind = normalize_type(builder.state.objects[obj].kind.name) \
+            if obj in builder.state.objects else ""
+        if any(word in kind for word in ("casserole", "roasting", "bakingtray", "bakingdish")):
+            return ("Oven", "StoveBurner")
+        if builder.state.value("metal", (obj,)) is True:
+            return ("StoveBurner", "Stove", "Oven")
+    return _DEFAULT_HEAT
+
+
 def _objects(grounded: Grounded) -> list[str]:
     return [i for r in grounded.objects if r.kind == "object" for i in r.ids]
 
@@ -48,7 +61,10 @@ def _appliance(builder: PlanBuilder, grounded: Grounded) -> str:
         if ref is not None and ref.kind == "object" and ref.id and builder.state.value(
                 "heat_source", (ref.id,)) is not False:
             return ref.id
-    wanted = _APPLIANCE.get(grounded.clause.verb or "", _DEFAULT_HEAT)
+    for obj in _objects(grounded):
+        if builder.state.value("heat_source", (obj,)) is True:
+            return obj  # "turn the hob to medium": the thing named is what heats
+    wanted = _APPLIANCE.get(grounded.clause.verb or "") or _by_vessel(builder, grounded)
     for type_name in wanted:
         found = builder.find_type(type_name)
         if found is not None:

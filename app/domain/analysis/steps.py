@@ -278,9 +278,18 @@ class PlanBuilder:
             self.act("CloseObject", device, kind="enabling")
         if self.act("ToggleObjectOn" if on else "ToggleObjectOff", device, kind=kind) and on:
             self._switched.add(device)
-            self.cleanup("ToggleObjectOff", device)
+            if not _gives_light(self.state.objects[device].kind.name):
+                # A lamp left on harms no one (and darkness can); anything else is stopped.
+                self.cleanup("ToggleObjectOff", device)
 
     def relation_for(self, target: str) -> str:
         receptacle = self.state.objects.get(target)
         return "in" if receptacle is not None and receptacle.kind.name in CONTAINER_TYPES \
             else "on"
+
+
+def _gives_light(type_name: str) -> bool:
+    """Whether the thing is a light or lamp (not a lighter or a heat lamp)."""
+    name = normalize_type(type_name)
+    return ("lamp" in name or "light" in name) and not any(
+        word in name for word in ("lighter", "heat", "candle"))

@@ -61,7 +61,11 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     actionable = any(c.kind == "step" and c.schemas and c.schemas != ("goal",)
                      for c in reading.clauses)
     for index, clause in enumerate(reading.clauses):
-        if clause.kind != "step":
+        if clause.kind == "heading" and not harm_stated(clause.text, lexicon):
+            grounder.remember(clause.text)  # "Leo's party tea:" names things, asks nothing
+            others.append(clause)
+            continue
+        if clause.kind not in ("step", "heading"):
             others.append(clause)
             continue
         if _leave_as_is(clause):
@@ -103,6 +107,11 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
 _CONTRACTION = re.compile(r"'(ll|re|ve|d|m|s|t)\b")
 _KEEP_STATES = frozenset({"going", "on", "running", "burning", "lit", "open", "charging",
                           "hot", "warm", "plugged"})
+_STILL_RUNNING = frozenset({"heats", "heating", "cooks", "cooking", "boils", "boiling",
+                            "warms", "warming", "bakes", "baking", "simmers", "simmering",
+                            "fills", "filling", "runs", "running", "charges", "charging",
+                            "defrosts", "defrosting", "thaws", "preheats", "preheating",
+                            "roasts", "roasting", "fries", "frying"})
 _RETURN_WORDS = frozenset({"back", "home", "return", "returns", "get", "later", "morning",
                            "overnight", "tomorrow", "tonight"})
 
@@ -116,6 +125,9 @@ def _kept_going(clauses: tuple[Clause, ...]) -> bool:
         if clause.kind == "step" and clause.verb in ("keep", "leave") and (
                 clause.complement in _KEEP_STATES or words & _KEEP_STATES):
             return True
+        if clause.kind == "condition" and clause.opener in ("while", "whilst") and \
+                words & _STILL_RUNNING:
+            return True  # "go hoover upstairs while it heats up": it runs while the robot is away
         if clause.kind in ("condition", "purpose"):
             returning = returning or (bool(words & _RETURN_WORDS) and clause.opener in (
                 "till", "until", "when", "so", "so that", "for when"))
