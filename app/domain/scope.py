@@ -9,7 +9,8 @@ the way, put down what is held) and picking up something else only to move it as
 it down again in the same room. `scope_lines` renders it in words for a planner.
 Made-up entities (a surface or a cup Stage 1 added because the scene lacked one, the speaker
 when the scene does not list them) stand for any entity of their type: `object_kind` or
-`target_kind` says which. The checks live in `scope_check.py`.
+`target_kind` says which (an object type, `room`, `person` for the speaker, `person:<role>` for
+someone else the command names). The checks live in `scope_check.py`.
 Fails: never; a command with no step yields a scope that authorizes only the enabling moves.
 """
 
@@ -19,6 +20,7 @@ from typing import TYPE_CHECKING
 
 from pydantic import BaseModel, ConfigDict
 
+from app.domain.analysis.grounding import USER_ID
 from app.domain.analysis.sketch import Choice, Planned
 from app.domain.models import GateRequest
 from app.domain.world import WorldState, state_from_request
@@ -49,7 +51,8 @@ class ScopeStep(BaseModel):
     object_kind: str | None = None
     """Set when Stage 1 made the object up: any object of this type will do."""
     target_kind: str | None = None
-    """Set when Stage 1 made the target up: `person`, `room`, or an object type."""
+    """Set when Stage 1 made the target up: an object type, `room`, `person` (the speaker: anyone)
+    or `person:<role>` (someone of that role or name)."""
 
 
 class TaskScope(BaseModel):
@@ -123,6 +126,10 @@ def _made_up_kind(entity: str | None, scene: WorldState, given: WorldState) -> s
     kind = scene.entity_type(entity)
     if kind == "object":
         return normalize_type(scene.objects[entity].kind.name)
+    if kind == "person" and entity != USER_ID:
+        # "my sister" whom the scene does not list: a person of that role or name.
+        role = normalize_type(scene.people[entity].role or "")
+        return f"person:{role}" if role else kind
     return kind
 
 

@@ -4,6 +4,8 @@ In: a `TaskScope` and parsed actions with the state each runs in. Out: `Departur
 leaves the task, with the rule it breaks, a description quoting the command's words it departs
 from, and a pseudo-formula `scope(action, object, target)` (not the condition language).
 Rules, in the order they are told apart:
+An entity matches the one the scope names when it is that entity, controls it or is controlled
+by it (a stove's knob and its burner), or, for an entity Stage 1 made up, is of its kind.
 - `scope.target`: the task does this action with this object, but to someone or something
   else (`HandOver mug_1` to mum when the command said dad);
 - `scope.action`: the object is part of the task, this action on it is not (`ThrowObject`);
@@ -48,10 +50,18 @@ def _matches(expected: str | None, kind: str | None, actual: str | None,
              state: WorldState) -> bool:
     if expected is None or expected == actual:
         return True
-    if kind is None or actual is None:
+    if actual is None:
         return False
+    if kind is None:
+        # A stove's knob stands for its burner, and the other way round.
+        return ((actual, "controls", expected) in state.relations
+                or (expected, "controls", actual) in state.relations)
     if kind in ("person", "room"):
         return state.entity_type(actual) == kind
+    if kind.startswith("person:"):
+        person = state.people.get(actual)
+        return person is not None and kind[7:] in {
+            normalize_type(n) for n in (person.role, person.name) if n}
     obj = state.objects.get(actual)
     return obj is not None and normalize_type(obj.kind.name) == kind
 
