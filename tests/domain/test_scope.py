@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 
-from app.domain.analysis import SymbolicAnalyzer
+from app.domain.analysis import SymbolicAnalyzer, Understanding
 from app.domain.binding import TemplateIndex
 from app.domain.contracts import Contract, planner_constraints
 from app.domain.models import GateRequest
@@ -235,3 +235,21 @@ class TestPlannerWords:
         assert "HandOver mug_1 -> dad" in scope[0]
         assert any("moved aside" in line or "move it aside" in line for line in scope)
         assert "preconditions" in lines[-1]
+
+
+class _BrokenReader:
+    def understand(self, request: GateRequest) -> Understanding:
+        raise RuntimeError("reader down")
+
+
+class TestPipelineScope:
+    def test_a_reader_that_fails_defers_instead_of_authorizing(
+            self, request_: GateRequest) -> None:
+        result = run_gate(request_, templates=TemplateIndex(load_library(LIBRARY)),
+                          analyzer=SymbolicAnalyzer(), reader=_BrokenReader())
+        assert result.decision.decision.value == "defer" and result.contract is None
+        assert "scope" in result.decision.reason
+
+    def test_the_symbolic_analyzer_reads_the_scope_by_default(
+            self, contract: Contract) -> None:
+        assert contract.scope is not None and contract.scope.steps
