@@ -9,8 +9,9 @@ None with the reason, and the goal the planner searched for.
 simulator's action model (shared preconditions and effects plus AI2-THOR's rules), restricted to
 the objects the goal mentions and what they need (their closed containers, heat sources and their
 knobs, the tap and sink). With a contract, a successor is kept only if the contract's fast
-evaluator (`app.domain.monitor.CompiledContract`) says the action's guards hold before it, and the
-invariants hold and no abort holds after it; an unknown counts as a violation (fail closed).
+evaluator (`app.domain.monitor.CompiledContract`) says the action's guards hold before it, the
+invariants hold and no abort holds after it, and the action is within the task's scope (the
+enabling moves or what the command authorizes); an unknown counts as a violation (fail closed).
 Without a contract it plans for the goal alone, as an unguarded planner would. The LLM planner
 (`app.adapters.llm`) plugs in through the same protocol. Fails: never raises for a goal it cannot
 reach (the outcome says why); `GoalError` is caught into the outcome.
@@ -183,7 +184,9 @@ class _Search:
         return (first_failure(contract.guards_for(action.name), before, action.args,
                               must_be=True) is None
                 and first_failure(contract.aborts, after, None, must_be=False) is None
-                and first_failure(contract.invariants, after, None, must_be=True) is None)
+                and first_failure(contract.invariants, after, None, must_be=True) is None
+                and (contract.scope is None
+                     or contract.scope.departure(action, before, 0) is None))
 
     def heuristic(self, state: WorldState) -> float:
         return min(sum(self._estimate(state, lit) for lit in alt)

@@ -151,6 +151,30 @@ class ContractConditionOut(BaseModel):
     template_id: str
     template_version: int
     bindings: dict[str, Any]
+    envelope: bool = False
+
+
+class ScopeStepOut(BaseModel):
+    """One step the command authorizes; `object_kind`/`target_kind` when Stage 1 made the
+    entity up (then any entity of that kind will do)."""
+
+    action: str
+    object: str | None
+    target: str | None
+    words: str
+    kind: str
+    object_kind: str | None = None
+    target_kind: str | None = None
+
+
+class ScopeOut(BaseModel):
+    """The task's scope: the authorized steps, the actions allowed on anything, and whether
+    something outside the task may be picked up to be moved aside."""
+
+    command: str
+    steps: list[ScopeStepOut]
+    enabling: list[str]
+    move_aside: bool
 
 
 class ContractResponse(BaseModel):
@@ -164,6 +188,8 @@ class ContractResponse(BaseModel):
     attempts_used: int = 0
     attempts_left: int | None = None
     status: str = "active"
+    scope: ScopeOut | None = None
+    """None for a contract compiled before scopes existed: its plans get no scope check."""
 
 
 def _condition(condition: ContractCondition) -> ContractConditionOut:
@@ -176,6 +202,7 @@ def _condition(condition: ContractCondition) -> ContractConditionOut:
         template_id=condition.template_id,
         template_version=condition.template_version,
         bindings=dict(condition.bindings),
+        envelope=condition.envelope,
     )
 
 
@@ -191,4 +218,6 @@ def contract_response(contract: Contract, stored: ContractRecord) -> ContractRes
         attempts_used=stored.attempts_used,
         attempts_left=stored.attempts_left,
         status=stored.status.value,
+        scope=None if contract.scope is None else ScopeOut.model_validate(
+            contract.scope.model_dump()),
     )

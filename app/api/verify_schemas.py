@@ -78,6 +78,8 @@ class ViolationOut(BaseModel):
     counterexample: dict[str, Any] = Field(default_factory=dict)
     free: list[str] = Field(default_factory=list)
     detail: str | None = None
+    quote: str | None = None
+    """For kind `scope`: the words of the command the step departs from."""
 
 
 class VerifyResponse(BaseModel):
@@ -105,6 +107,7 @@ def _out(item: Violation | Undecided) -> ViolationOut:
         counterexample=dict(item.counterexample) if isinstance(item, Violation) else {},
         free=list(item.free) if isinstance(item, Violation) else [],
         detail=item.detail if isinstance(item, Undecided) else None,
+        quote=item.quote if isinstance(item, Violation) else None,
     )
 
 

@@ -1,11 +1,13 @@
 """Stage 4, Contract Compilation: the Task Safety Contract of an authorized task.
 
-In: the bound hazards from Stage 2, and the baseline envelope (templates that apply to every
-task). Out: a `Contract` = (invariants, guards, aborts): the union of the matched and baseline
-templates' conditions with their variables substituted on the parsed formulas (not by
-text replacement), defaults filled, deduplicated by (condition id, bindings), and every formula
-type-checked against the vocabulary after substitution. It also renders the contract as plain
-planning constraints, so a planner can be told the rules before it writes a plan.
+In: the bound hazards from Stage 2, the baseline envelope (templates that apply to every task) and
+the task's scope (`scope.py`). Out: a `Contract` = (invariants, guards, aborts, scope): the union of
+the matched and baseline templates' conditions with their variables substituted on the parsed
+formulas (not by text replacement), defaults filled, deduplicated by (condition id, bindings), and
+every formula type-checked against the vocabulary after substitution; conditions of the envelope are
+marked `envelope`. A contract stored before scopes existed has `scope` None: its plans are not
+checked against a scope. It also renders the contract as plain planning constraints (envelope,
+matched conditions, scope), so a planner can be told the rules before it writes a plan.
 Fails: `FormulaError` if a template's condition does not parse or check (a library defect: the
 gate must not authorize on it).
 """
@@ -20,6 +22,7 @@ from pydantic import BaseModel, ConfigDict
 from app.domain.binding import BindingValue, BoundHazard, BoundTemplate
 from app.domain.formula import EntityRef, check, parse, render, substitute
 from app.domain.models import ConditionKind, TemplateCondition, VariableType
+from app.domain.scope import TaskScope, scope_lines
 from app.domain.world.action_specs import ACTION_SPECS
 
 _ENTITY_TYPES = {"object", "person", "room", "robot", "entity"}
@@ -38,6 +41,8 @@ class ContractCondition(BaseModel):
     template_id: str
     template_version: int
     bindings: dict[str, BindingValue]
+    envelope: bool = False
+    """From a template that applies to every task (the baseline envelope)."""
 
 
 class Contract(BaseModel):
@@ -50,6 +55,8 @@ class Contract(BaseModel):
     guards: tuple[ContractCondition, ...] = ()
     aborts: tuple[ContractCondition, ...] = ()
     template_versions: dict[str, int] = {}
+    scope: TaskScope | None = None
+    """What the task authorizes; None for a contract compiled before scopes (or inline)."""
 
     @property
     def conditions(self) -> tuple[ContractCondition, ...]:
@@ -60,12 +67,14 @@ class Contract(BaseModel):
 
 
 def compile_contract(bound: Iterable[BoundHazard],
-                     baseline: Iterable[BoundTemplate] = ()) -> Contract:
+                     baseline: Iterable[BoundTemplate] = (),
+                     scope: TaskScope | None = None) -> Contract:
     """Compile the contract for an authorized task from its bound hazards.
 
     Args:
         bound: every bound hazard with its matched templates.
         baseline: templates that apply to every task (the baseline envelope), already bound.
+        scope: the task's scope, stored with the contract.
 
     Returns:
         The deduplicated, type-checked contract.
@@ -77,11 +86,13 @@ def compile_contract(bound: Iterable[BoundHazard],
         kind: {} for kind in ConditionKind
     }
     versions: dict[str, int] = {}
-    matches = [*(m for hazard in bound for m in hazard.matches), *baseline]
+    envelope = list(baseline)
+    matches = [*(m for hazard in bound for m in hazard.matches), *envelope]
+    always = {id(m) for m in envelope}
     for match in matches:
         versions[match.template.id] = match.template.version
         for kind, condition in match.template.conditions():
-            compiled = _bind_condition(match, kind, condition)
+            compiled = _bind_condition(match, kind, condition, envelope=id(match) in always)
             key = (compiled.id, render_bindings(compiled.bindings))
             by_kind[kind].setdefault(key, compiled)
     return Contract(
@@ -89,11 +100,12 @@ def compile_contract(bound: Iterable[BoundHazard],
         guards=tuple(by_kind[ConditionKind.GUARD].values()),
         aborts=tuple(by_kind[ConditionKind.ABORT].values()),
         template_versions=versions,
+        scope=scope,
     )
 
 
 def _bind_condition(
-    match: BoundTemplate, kind: ConditionKind, condition: TemplateCondition
+    match: BoundTemplate, kind: ConditionKind, condition: TemplateCondition, *, envelope: bool
 ) -> ContractCondition:
     template = match.template
     variable_types = {v.name: v.type.value for v in template.variables}
@@ -111,6 +123,7 @@ def _bind_condition(
         template_id=template.id,
         template_version=template.version,
         bindings=used,
+        envelope=envelope,
     )
 
 
@@ -147,25 +160,36 @@ def render_bindings(bindings: Mapping[str, BindingValue]) -> str:
 def planner_constraints(contract: Contract) -> list[str]:
     """The contract in plain words, one constraint a line, ready for a planner's prompt.
 
-    Each line says when the rule applies (in every state; just before every step of a named
-    action, with what that action does; or as a stop condition), the rule in words, the
-    concrete entities and values it is about, and the exact condition with its id, so a
-    planner can both follow it and match a `/verify` violation back to it.
+    Each condition's line says when the rule applies (in every state; just before every step
+    of a named action, with what that action does; or as a stop condition), the rule in words,
+    the concrete entities and values it is about, and the exact condition with its id, so a
+    planner can both follow it and match a `/verify` violation back to it. The baseline
+    envelope's conditions come first, each marked as holding for every task; the task's scope
+    (what the command authorizes) follows the conditions.
 
     Args:
         contract: a compiled contract.
 
     Returns:
-        Sentences naming the concrete entities each condition is about, then one closing note
-        on preconditions and unknown facts.
+        Sentences naming the concrete entities each condition is about, the scope in words
+        (when the contract has one), then one closing note on preconditions and unknown facts.
     """
     lines: list[str] = []
-    for condition in contract.invariants:
-        lines.append(f"In every state, from start to finish: {_sentence(condition)}")
-    for condition in contract.guards:
-        lines.append(f"{_guard_scope(condition.action)}: {_sentence(condition)}")
-    for condition in contract.aborts:
-        lines.append(f"Never let this happen (execution halts at once): {_sentence(condition)}")
+    for envelope in (True, False):
+        mark = "For every task (baseline envelope). " if envelope else ""
+        for condition in contract.invariants:
+            if condition.envelope is envelope:
+                lines.append(f"{mark}In every state, from start to finish: "
+                             f"{_sentence(condition)}")
+        for condition in contract.guards:
+            if condition.envelope is envelope:
+                lines.append(f"{mark}{_guard_scope(condition.action)}: {_sentence(condition)}")
+        for condition in contract.aborts:
+            if condition.envelope is envelope:
+                lines.append(f"{mark}Never let this happen (execution halts at once): "
+                             f"{_sentence(condition)}")
+    if contract.scope is not None:
+        lines.extend(f"Task scope: {line}" for line in scope_lines(contract.scope))
     lines.append(
         "Every step must also meet its action's own preconditions (be next to what it picks "
         "up, hold what it puts down or hands over). A fact the scene does not state counts "

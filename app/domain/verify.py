@@ -3,8 +3,9 @@
 In: a plan (steps in the wire shape, AI2-THOR/SMART-LLM names and aliases), a `Contract`, the
 initial state (a `WorldState`, or the gate request / initial state to build it from) and a
 solver time budget. Out: a `VerificationResult`: ok, or the violations, each with the step and
-action, its kind (`invariant`, `guard`, `abort`, `precondition`), the condition's id, formula and
-description, and a counterexample.
+action, its kind (`invariant`, `guard`, `abort`, `precondition`, `scope`), the condition's id,
+formula and description, and a counterexample (a scope violation has none, and quotes the words
+of the command it departs from).
 
 How: symbolic execution through the action model gives the trace s0..sL, in which a fact the
 request did not give stays `Unknown` (a free Z3 variable). Every invariant must hold in every
@@ -14,8 +15,10 @@ three-valued evaluator decides first; only a definite "fine" skips Z3 (an unknow
 instance always goes to the solver, which also gives the counterexample). Each condition is
 reported at its first violating step; the trace stops at the first failed precondition (the
 action would not run). A plan that does not end with `Finish` ends with it implicitly: guards on
-`Finish` (what the task must not leave behind) are checked on the last state. A solver
-`unknown` or a spent budget fails the verification.
+`Finish` (what the task must not leave behind) are checked on the last state. A contract with a
+scope also has every step checked against it (`scope_check.py`): each step outside the task is
+a `scope` violation at the step that leaves the task. A solver `unknown` or a spent budget fails
+the verification.
 Fails: `PlanError` (step and field) for a step that is not an object, names an unknown action or
 an id not in the state; `FormulaError` (field `contract...`) for a condition that does not parse.
 """
@@ -30,10 +33,18 @@ from app.domain.contracts import Contract
 from app.domain.errors import PlanError
 from app.domain.formula import Value
 from app.domain.models import GateRequest, InitialState
+from app.domain.scope_check import Departure, ScopeMatcher, plan_departures
 from app.domain.smt import Outcome
 from app.domain.smt.trace import TraceProver
 from app.domain.verify_checks import Check, CheckKind, ContractChecks, contract_checks
-from app.domain.world import WorldState, canonical_action, parse_action, state_from_request, step
+from app.domain.world import (
+    Action,
+    WorldState,
+    canonical_action,
+    parse_action,
+    state_from_request,
+    step,
+)
 
 __all__ = ["CheckKind", "Undecided", "VerificationResult", "Violation", "verify_plan"]
 
@@ -56,6 +67,16 @@ class Violation:
     description: str
     counterexample: Mapping[str, Value] = field(default_factory=dict)
     free: tuple[str, ...] = ()
+    quote: str | None = None
+    """For a `scope` violation: the words of the command the step departs from."""
+
+    @classmethod
+    def of_departure(cls, departure: Departure) -> Violation:
+        """A step outside the task's scope, as a violation."""
+        return cls(step=departure.step, state=departure.step,
+                   action=departure.action.to_wire(), kind=CheckKind.SCOPE,
+                   condition_id=departure.condition_id, formula=departure.formula,
+                   description=departure.description, quote=departure.quote)
 
 
 @dataclass(frozen=True, slots=True)
@@ -156,11 +177,13 @@ def verify_plan(
     run = _Run(TraceProver(timeout_ms))
     run.state(checks, state, step_index=0, state_index=0, action=None)
     states = 1
+    scoped: list[tuple[int, Action, WorldState]] = []
     for index, raw in enumerate(plan):
         parsed = _parse_step(raw, index, state)
         if isinstance(parsed, Violation):
             run.violations.append(parsed)
             break
+        scoped.append((index, parsed, state))
         wire, args = parsed.to_wire(), parsed.args
         before_ok = True
         for check in (*checks.guards_for(parsed.name), *checks.preconditions_for(parsed.name)):
@@ -173,6 +196,10 @@ def verify_plan(
         run.state(checks, state, step_index=index, state_index=index + 1, action=wire)
         states += 1
     complete = states == len(plan) + 1
+    if contract.scope is not None:
+        departures = plan_departures(ScopeMatcher(contract.scope), scoped, complete=complete)
+        run.violations.extend(map(Violation.of_departure, departures))
+        run.violations.sort(key=lambda v: v.step)  # stable: the order within a step is kept
     if complete and not _ends_with_finish(plan):
         # Every plan ends the task: what must hold at its end is checked on the last state.
         for check in checks.guards_for("Finish"):

@@ -23,12 +23,14 @@ from app.domain.world.preconditions import compiled_precondition
 
 
 class CheckKind(StrEnum):
-    """Which of the paper's conditions (or the action model's preconditions) a check is."""
+    """Which of the paper's conditions (or the action model's preconditions, or the task's
+    scope) a check is."""
 
     INVARIANT = "invariant"
     GUARD = "guard"
     ABORT = "abort"
     PRECONDITION = "precondition"
+    SCOPE = "scope"
 
 
 @dataclass(frozen=True, slots=True)

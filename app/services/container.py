@@ -1,8 +1,9 @@
 """The service container: everything a running gate needs, built once per app in the lifespan.
 
-In: settings. Out: `Services` (engine, repository, template cache, analyzer, policy). The
-analyzer is symbolic, LLM (through `app.adapters.llm`, cached in the repository) or their
-ensemble, as `SAFEGATE_ANALYZER` says.
+In: settings. Out: `Services` (engine, repository, template cache, analyzer, reader, policy).
+The analyzer is symbolic, LLM (through `app.adapters.llm`, cached in the repository) or their
+ensemble, as `SAFEGATE_ANALYZER` says; the reader, which reads an authorized command into the
+task's scope, is always the symbolic analyzer (the same instance when it is the analyzer).
 Fails: any start-up failure (database unreachable, migration or seed error) propagates, so the
 app never serves with a half-built gate.
 """
@@ -20,7 +21,7 @@ from app.domain.analysis import SymbolicAnalyzer
 from app.domain.binding import TemplateIndex
 from app.domain.ensemble import EnsembleAnalyzer
 from app.domain.gate import GatePolicy
-from app.domain.pipeline import Analyzer
+from app.domain.pipeline import Analyzer, Reader
 from app.metrics import Metrics
 from app.store import Repository, create_engine_for, migrate, seed_templates
 
@@ -54,6 +55,7 @@ class Services:
     analyzer: Analyzer
     policy: GatePolicy
     metrics: Metrics = field(default_factory=Metrics)
+    reader: Reader | None = None
 
     def close(self) -> None:
         self.engine.dispose()
@@ -117,12 +119,15 @@ def build_services(settings: Settings, *, metrics: Metrics | None = None) -> Ser
     repository = Repository(engine)
     if settings.seed_on_startup:
         seed_templates(repository, settings.templates_dir)
+    analyzer = build_analyzer(settings, cache=repository)
     return Services(
         settings=settings,
         engine=engine,
         repository=repository,
         templates=TemplateCache(repository),
-        analyzer=build_analyzer(settings, cache=repository),
+        analyzer=analyzer,
         policy=GatePolicy(theta=settings.theta),
         metrics=metrics or Metrics(),
+        reader=analyzer if isinstance(analyzer, Reader) else SymbolicAnalyzer(
+            reject_from=settings.theta),
     )

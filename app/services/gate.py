@@ -40,6 +40,7 @@ def decide(
         templates=services.templates.index(),
         analyzer=services.analyzer,
         policy=services.policy,
+        reader=services.reader,
     )
     decision = result.decision
     request_id = uuid.uuid4().hex

@@ -58,8 +58,12 @@ class TestVerdicts:
         assert response.status_code == 200
         body = response.json()
         assert body["ok"] is False
-        [violation] = body["violations"]
+        # The envelope's guard, then the task's scope: the command puts the knife away.
+        violation, scope = body["violations"]
         assert violation["kind"] == "guard" and violation["step"] == 2
+        assert (scope["kind"], scope["step"], scope["condition_id"]) == (
+            "scope", 2, "scope.action")
+        assert scope["quote"] == "put the knife in the drawer"
         assert violation["action"] == {"action": "ThrowObject", "object": "knife_1",
                                        "target": "drawer_1"}
         # The baseline envelope binds "throw only soft things" into every contract.

@@ -72,6 +72,7 @@ class ViolationOut(BaseModel):
     phase: str
     established: bool
     unknown_facts: list[str]
+    quote: str | None = None
 
 
 class MonitorSummaryResponse(BaseModel):

@@ -1,8 +1,9 @@
 """A contract's conditions compiled once for monitoring, and their three-valued evaluation.
 
 In: a `Contract` (Stage 4). Out: a `CompiledContract` whose invariants, aborts and guards (grouped
-by the canonical action they guard) are ready-to-run `CompiledFormula`s, and `first_failure`,
-which evaluates a group of conditions in a state and names the one that fails, if any.
+by the canonical action they guard) are ready-to-run `CompiledFormula`s, with the task's scope
+indexed for checking (`scope`, None for a contract without one), and `first_failure`, which
+evaluates a group of conditions in a state and names the one that fails, if any.
 
 Fail closed: a guard or an invariant fails unless it is *true*; an abort fails unless it is
 *false*. An unknown result is therefore a failure, marked `established=False`, and
@@ -30,6 +31,7 @@ from app.domain.formula import (
     parse,
 )
 from app.domain.models import ConditionKind
+from app.domain.scope_check import ScopeMatcher
 from app.domain.world import canonical_action
 
 MAX_UNKNOWN_FACTS = 8
@@ -109,7 +111,7 @@ def _compile(condition: ContractCondition) -> CompiledCondition:
 class CompiledContract:
     """A contract ready to monitor; immutable, so sessions of one contract may share it."""
 
-    __slots__ = ("_guards", "_universal_guards", "aborts", "contract", "invariants")
+    __slots__ = ("_guards", "_universal_guards", "aborts", "contract", "invariants", "scope")
 
     def __init__(self, contract: Contract) -> None:
         """Compile every condition once.
@@ -121,6 +123,7 @@ class CompiledContract:
             FormulaError: a condition does not parse or check, or a guard's action is unknown.
         """
         self.contract = contract
+        self.scope = None if contract.scope is None else ScopeMatcher(contract.scope)
         self.invariants = tuple(_compile(c) for c in contract.invariants)
         self.aborts = tuple(_compile(c) for c in contract.aborts)
         by_action: dict[str, list[CompiledCondition]] = {}

@@ -122,16 +122,22 @@ class MonitorViolation:
     phase: MessageType
     established: bool = True
     unknown_facts: tuple[str, ...] = ()
+    quote: str | None = None
+    """For a `scope` violation: the words of the command the action departs from."""
 
     def to_wire(self) -> dict[str, Any]:
-        """The JSON shape of the spec, plus `seq`, `phase`, `established` and `unknown_facts`."""
-        return {
+        """The JSON shape of the spec, plus `seq`, `phase`, `established` and `unknown_facts`
+        (and `quote` for a scope violation)."""
+        wire = {
             "timestamp": self.timestamp.isoformat().replace("+00:00", "Z"),
             "action": dict(self.action), "kind": self.kind,
             "condition_id": self.condition_id, "formula": self.formula,
             "description": self.description, "seq": self.seq, "phase": self.phase,
             "established": self.established, "unknown_facts": list(self.unknown_facts),
         }
+        if self.quote is not None:
+            wire["quote"] = self.quote
+        return wire
 
     @classmethod
     def from_wire(cls, wire: Mapping[str, Any]) -> MonitorViolation:
@@ -144,6 +150,7 @@ class MonitorViolation:
             phase="after" if wire.get("phase") == "after" else "before",
             established=bool(wire.get("established", True)),
             unknown_facts=tuple(str(f) for f in wire.get("unknown_facts", ())),
+            quote=None if wire.get("quote") is None else str(wire["quote"]),
         )
 
 

@@ -5,12 +5,15 @@ In: a `CompiledContract`, the session's initial `WorldState`, then each runtime 
 paper's MonitorSummary.
 
 Before an action: the observation (if any) is applied, the action is parsed against it, then the
-aborts and the guards of that action type are evaluated. After it: the action model predicts the
-next state (`world.step`) and the observation, which is authoritative, corrects it; then the
-aborts and the invariants are evaluated. Every condition is three-valued and fails closed, for
-invariants too: Stage 5 treats an unknown fact as free and refuses a plan whose invariant some
-value of it would break, so a runtime state where the invariant is unknown is one the verified
-plan never promised; the violation names the unknown facts, so the runtime knows what to report.
+aborts and the guards of that action type are evaluated, then (for a contract with a scope) the
+action is checked against the task's scope: an action outside it is a `scope` violation. The monitor
+cannot see ahead, so it allows picking up something outside the task (it may be moved aside) and
+halts at the first action that uses it or puts it down in another room. After it: the action model
+predicts the next state (`world.step`) and the observation, which is authoritative, corrects it;
+then the aborts and the invariants are evaluated. Every condition is three-valued and fails closed,
+for invariants too: Stage 5 treats an unknown fact as free and refuses a plan whose invariant some
+value of it would break, so a runtime state where the invariant is unknown is one the verified plan
+never promised; the violation names the unknown facts, so the runtime knows what to report.
 
 The first violation halts the session, absorbingly: the monitor has no reset, and every later
 message is answered `halted`. A malformed or out-of-order message is answered `error` (not
@@ -36,6 +39,7 @@ from app.domain.monitor.messages import (
     parse_message,
     seq_of,
 )
+from app.domain.scope_check import AsideTracker, Departure
 from app.domain.world import Action, WorldState, apply_snapshot, parse_action, step
 
 Clock = Callable[[], datetime]
@@ -58,8 +62,8 @@ class _Pending:
 class Monitor:
     """The runtime monitor of one session."""
 
-    __slots__ = ("_aborts_clear", "_clock", "_last_seq", "_pending", "_violation", "contract",
-                 "counters", "state")
+    __slots__ = ("_aborts_clear", "_aside", "_clock", "_last_seq", "_pending", "_violation",
+                 "contract", "counters", "state")
 
     def __init__(
         self,
@@ -89,6 +93,7 @@ class Monitor:
         # The state the aborts were last found false in: states are immutable, so a `before`
         # that brings no observation need not evaluate them again.
         self._aborts_clear: WorldState | None = None
+        self._aside = None if contract.scope is None else AsideTracker(contract.scope)
 
     @property
     def halted(self) -> bool:
@@ -182,6 +187,9 @@ class Monitor:
         self.state = state
         if failure is not None:
             return self._halt(failure, action, seq, "before")
+        departure = self._departure(action, state, seq)
+        if departure is not None:
+            return self._halt_scope(departure, action, seq)
         self._pending = _Pending(seq, action, message.action)
         return Verdict("allow", seq)
 
@@ -215,6 +223,20 @@ class Monitor:
         if failure is not None:
             return self._halt(failure, action, seq, "after")
         return Verdict("allow", seq)
+
+    def _departure(self, action: Action, state: WorldState, seq: int) -> Departure | None:
+        scope, aside = self.contract.scope, self._aside
+        if scope is None or aside is None:
+            return None
+        return scope.departure(action, state, seq) or aside.observe(action, state, seq)
+
+    def _halt_scope(self, departure: Departure, action: Action, seq: int) -> Verdict:
+        self._violation = MonitorViolation(
+            timestamp=self._clock(), action=action.to_wire(), kind="scope",
+            condition_id=departure.condition_id, formula=departure.formula,
+            description=departure.description, seq=seq, phase="before", quote=departure.quote)
+        self._pending = None
+        return Verdict("violation", seq, self._violation, halted=True)
 
     def _halt(self, failure: Failure, action: Action, seq: int, phase: MessageType) -> Verdict:
         condition = failure.compiled.condition
