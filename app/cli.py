@@ -77,7 +77,7 @@ def serve(
     """Serve the SafeGate API (embedded default: SQLite file, symbolic analyzer, no network)."""
     import uvicorn
 
-    from app.api.observability import configure_logging
+    from app.api.logs import configure_logging
     from app.config import Settings
 
     log_level = Settings().log_level
