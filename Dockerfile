@@ -22,7 +22,6 @@ RUN groupadd --system --gid 10001 safegate \
  && mkdir -p /srv/data && chown safegate:safegate /srv/data
 COPY --from=build /opt/venv /opt/venv
 WORKDIR /srv
-COPY --from=build /srv/pyproject.toml /srv/README.md ./
 COPY --from=build /srv/app ./app
 COPY --from=build /srv/bench ./bench
 COPY --from=build /srv/sim ./sim
