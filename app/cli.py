@@ -1,28 +1,71 @@
-"""The `safegate` command line: serve the API, score and evaluate benchmarks, manage keys.
+"""The `safegate` command line: serve the API, migrate its database, try the gate, manage keys
+and the template library, score and evaluate benchmarks.
 
-In: arguments and `SAFEGATE_*` environment variables. Out: a running server, or tables on stdout.
-Fails: a non-zero exit code with a one-line reason.
+In: arguments and `SAFEGATE_*` environment variables. Out: a running server, or Rich tables on
+stdout (`app/commands/` holds the key, template and gate commands).
+Fails: a non-zero exit code with a one-line reason on stderr.
 """
 
 from __future__ import annotations
 
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import Annotated
 
 import typer
 
-from app.store.records import ApiKeyRole
-
-if TYPE_CHECKING:
-    from app.store import Repository
+from app.commands.gate import gate_command
+from app.commands.keys import keys_cli
+from app.commands.templates import templates_cli
 
 cli = typer.Typer(help="SafeGate: a pre-execution safety gate for LLM-controlled robots.",
                   no_args_is_help=True)
 bench_cli = typer.Typer(help="Evaluate SafeGate on benchmark files.", no_args_is_help=True)
 cli.add_typer(bench_cli, name="bench")
-keys_cli = typer.Typer(help="Manage API keys (stored hashed; a key is printed once).",
-                       no_args_is_help=True)
 cli.add_typer(keys_cli, name="keys")
+cli.add_typer(templates_cli, name="templates")
+cli.command("gate")(gate_command)
+
+
+def package_version() -> str:
+    """SafeGate's installed version (`pyproject.toml`'s)."""
+    try:
+        return version("safegate")
+    except PackageNotFoundError:  # running from a source tree that was never installed
+        return "unknown"
+
+
+def _print_version(value: bool) -> None:
+    if value:
+        typer.echo(f"safegate {package_version()}")
+        raise typer.Exit
+
+
+@cli.callback()
+def root(
+    _version: Annotated[bool, typer.Option(
+        "--version", help="Print the version and exit.", callback=_print_version,
+        is_eager=True)] = False,
+) -> None:
+    """SafeGate: a pre-execution safety gate for LLM-controlled robots."""
+
+
+@cli.command()
+def migrate() -> None:
+    """Upgrade the configured database (SAFEGATE_DATABASE_URL) to the latest schema."""
+    from sqlalchemy import make_url
+
+    from app.commands.shared import fail, settings
+    from app.domain.errors import Unavailable
+    from app.store import migrate as upgrade
+
+    url = settings().database_url
+    shown = make_url(url).render_as_string(hide_password=True)
+    try:
+        upgrade(url)
+    except Unavailable as error:
+        fail(f"error: {error.detail} ({shown})")
+    typer.echo(f"{shown} is at the latest schema (alembic head)")
 
 
 @cli.command()
@@ -34,7 +77,7 @@ def serve(
     """Serve the SafeGate API (embedded default: SQLite file, symbolic analyzer, no network)."""
     import uvicorn
 
-    from app.api.observability import configure_logging
+    from app.api.logs import configure_logging
     from app.config import Settings
 
     log_level = Settings().log_level
@@ -65,54 +108,6 @@ def bench_score(
     with embedded_decider() as decide:
         report = score_files(list(files), decide)
     Console().print(render_report(report))
-
-
-def _repository() -> Repository:
-    from app.config import Settings
-    from app.store import Repository, create_engine_for, migrate
-
-    settings = Settings()
-    engine = create_engine_for(settings.database_url)
-    migrate(engine)
-    return Repository(engine)
-
-
-@keys_cli.command("create")
-def keys_create(
-    role: Annotated[ApiKeyRole, typer.Option(help="What the key may do.")],
-    name: Annotated[str, typer.Option(help="Who or what holds the key.")] = "",
-) -> None:
-    """Create a key and print it once (only its hash is stored)."""
-    from app.services.access import issue_api_key
-
-    record, secret = issue_api_key(_repository(), role, name or f"{role.value} key")
-    typer.echo(secret)
-    typer.echo(f"created {record.role.value} key {record.id} ({record.name}); "
-               "store it now, it cannot be shown again", err=True)
-
-
-@keys_cli.command("list")
-def keys_list() -> None:
-    """List keys (id, role, name, created, revoked); never their secrets."""
-    for key in _repository().list_api_keys():
-        state = "revoked" if key.revoked else "active"
-        typer.echo(f"{key.id}\t{key.role.value}\t{state}\t{key.created_at:%Y-%m-%d %H:%M}"
-                   f"\t{key.name}")
-
-
-@keys_cli.command("revoke")
-def keys_revoke(
-    key_id: Annotated[str, typer.Argument(help="The key's id (see `keys list`).")],
-) -> None:
-    """Revoke a key for good."""
-    from app.domain.errors import NotFound
-
-    try:
-        key = _repository().revoke_api_key(key_id)
-    except NotFound as error:
-        typer.echo(error.detail, err=True)
-        raise typer.Exit(code=1) from error
-    typer.echo(f"revoked {key.role.value} key {key.id} ({key.name})")
 
 
 @bench_cli.command("run")

@@ -13,7 +13,7 @@ from contextlib import asynccontextmanager
 
 from fastapi import Depends, FastAPI
 
-from app.api import observability, problems
+from app.api import docs, observability, problems
 from app.api.deps import require_key_when_locked, robot_writes
 from app.api.limits import json_body_within_limits
 from app.api.routes import (
@@ -59,12 +59,15 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="0.1.0",
         summary="Pre-execution safety gate and Task Safety Contracts for LLM-controlled robots",
         lifespan=lifespan,
+        docs_url=None,  # FastAPI's pages load from a CDN; app/api/docs.py serves local assets
+        redoc_url=None,
         # With SAFEGATE_AUTH=keys, every route (websockets too) needs a valid key; every JSON
         # body is checked for depth, numbers and unstorable text before any route sees it.
         dependencies=[Depends(require_key_when_locked), Depends(json_body_within_limits)],
     )
     app.state.settings = resolved
     problems.install(app)
+    docs.install(app)
     observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes)
     # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.
     # Routes are matched in order, so the robot's hot path (POST /gate) comes first.

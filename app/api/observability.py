@@ -1,9 +1,13 @@
-"""Operations at the edge: request ids, JSON access logs, Prometheus metrics, a body-size limit.
+"""Operations at the edge: request ids, access logs, Prometheus metrics, a body-size limit.
 
-In: every HTTP request (a pure ASGI middleware, cheap enough for the gate's hot path).
-Out: an `X-Request-ID` header on every answer (the caller's, or a new one), one JSON log line per
-request on the `safegate.access` logger, metrics at `GET /metrics`, and a 413 problem+json for a
-body larger than `max_body_bytes` (checked on the declared length and while streaming).
+In: every HTTP request and websocket (pure ASGI middlewares, cheap enough for the gate's hot path).
+Out: an `X-Request-ID` on every HTTP answer (the caller's, up to 128 printable characters, or a
+new one; `asgi-correlation-id` keeps it in a context variable, so every log line of the request
+or websocket carries it, see `app.api.logs`), one log line per HTTP request on the
+`safegate.access` logger, with `gate_request_id` (the audit record's id, which the gate routes
+also answer in `X-Gate-Request-ID`) when the request decided something, metrics at
+`GET /metrics`, and a 413 problem+json for a body larger than `max_body_bytes` (checked on the
+declared length and while streaming).
 Fails: never blocks a request on logging or metrics.
 """
 
@@ -12,10 +16,10 @@ from __future__ import annotations
 import json
 import logging
 import time
-import uuid
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
+from asgi_correlation_id import CorrelationIdMiddleware, correlation_id
 from fastapi import FastAPI, Request, Response
 from prometheus_client import CONTENT_TYPE_LATEST, generate_latest
 
@@ -28,6 +32,16 @@ Send = Callable[[Message], Awaitable[None]]
 ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
 
 _access_log = logging.getLogger("safegate.access")
+
+REQUEST_ID_HEADER = "X-Request-ID"
+GATE_REQUEST_ID_HEADER = "X-Gate-Request-ID"
+_GATE_REQUEST_ID = GATE_REQUEST_ID_HEADER.lower().encode("latin-1")
+MAX_REQUEST_ID_CHARS = 128
+
+
+def acceptable_request_id(value: str) -> bool:
+    """Whether a caller's `X-Request-ID` is kept (else a new id replaces it)."""
+    return len(value) <= MAX_REQUEST_ID_CHARS and value.isprintable()
 
 
 class _BodyTooLarge(Exception):
@@ -53,15 +67,13 @@ class ObservabilityMiddleware:
             await self.app(scope, receive, send)
             return
         started = time.perf_counter()
-        headers = {k.decode("latin-1").lower(): v for k, v in scope.get("headers", [])}
-        request_id = headers.get("x-request-id", b"").decode("latin-1")[:128] or uuid.uuid4().hex
-        scope.setdefault("state", {})["request_id"] = request_id
-        status_holder = {"status": 500}
+        declared = next((v for k, v in scope.get("headers", []) if k.lower() == b"content-length"),
+                        None)
+        outcome: dict[str, Any] = {"status": 500, "gate_request_id": None}
 
-        declared = headers.get("content-length")
         if declared is not None and declared.isdigit() and int(declared) > self.max_body_bytes:
-            await self._too_large(send, request_id)
-            self._observe(scope, 413, started, request_id)
+            await self._too_large(send)
+            self._observe(scope, outcome | {"status": 413}, started)
             return
 
         received = 0
@@ -75,23 +87,22 @@ class ObservabilityMiddleware:
                     raise _BodyTooLarge
             return message
 
-        async def tagged_send(message: Message) -> None:
+        async def observed_send(message: Message) -> None:
             if message["type"] == "http.response.start":
-                status_holder["status"] = message["status"]
-                message.setdefault("headers", [])
-                message["headers"] = [
-                    *message["headers"], (b"x-request-id", request_id.encode("latin-1"))
-                ]
+                outcome["status"] = message["status"]
+                for key, value in message.get("headers", ()):
+                    if key == _GATE_REQUEST_ID:
+                        outcome["gate_request_id"] = value.decode("latin-1")
             await send(message)
 
         try:
-            await self.app(scope, limited_receive, tagged_send)
+            await self.app(scope, limited_receive, observed_send)
         except _BodyTooLarge:
-            await self._too_large(send, request_id)
-            status_holder["status"] = 413
-        self._observe(scope, status_holder["status"], started, request_id)
+            await self._too_large(send)
+            outcome["status"] = 413
+        self._observe(scope, outcome, started)
 
-    async def _too_large(self, send: Send, request_id: str) -> None:
+    async def _too_large(self, send: Send) -> None:
         body = _problem_body(
             413, "Request body too large", f"the body exceeds {self.max_body_bytes} bytes"
         )
@@ -101,69 +112,35 @@ class ObservabilityMiddleware:
             "headers": [
                 (b"content-type", b"application/problem+json"),
                 (b"content-length", str(len(body)).encode()),
-                (b"x-request-id", request_id.encode("latin-1")),
             ],
         })
         await send({"type": "http.response.body", "body": body})
 
-    def _observe(self, scope: Scope, status: int, started: float, request_id: str) -> None:
+    def _observe(self, scope: Scope, outcome: dict[str, Any], started: float) -> None:
         elapsed = time.perf_counter() - started
+        status = outcome["status"]
         route = scope.get("route")
         template = getattr(route, "path", None) or "unmatched"
         method = scope.get("method", "")
         self.metrics.requests.labels(method, template, str(status)).inc()
         self.metrics.latency.labels(method, template).observe(elapsed)
         if _access_log.isEnabledFor(logging.INFO):
-            _access_log.info("http_request", extra={"fields": {
-                "event": "http_request", "request_id": request_id, "method": method,
+            fields = {
+                "event": "http_request", "request_id": correlation_id.get(), "method": method,
                 "path": scope.get("path"), "route": template, "status": status,
                 "duration_ms": round(elapsed * 1000, 3),
-            }})
+            }
+            if outcome["gate_request_id"] is not None:
+                fields["gate_request_id"] = outcome["gate_request_id"]
+            _access_log.info("http_request", extra={"fields": fields})
 
 
 def install(app: FastAPI, metrics: Metrics, *, max_body_bytes: int) -> None:
-    """Add the middleware and `GET /metrics` to an app."""
+    """Add the middlewares (request ids outermost) and `GET /metrics` to an app."""
     app.add_middleware(ObservabilityMiddleware, metrics=metrics, max_body_bytes=max_body_bytes)
+    app.add_middleware(CorrelationIdMiddleware, header_name=REQUEST_ID_HEADER,
+                       update_request_header=False, validator=acceptable_request_id)
 
     @app.get("/metrics", include_in_schema=False)
     def prometheus_metrics(_: Request) -> Response:
         return Response(generate_latest(metrics.registry), media_type=CONTENT_TYPE_LATEST)
-
-
-class JsonLogFormatter(logging.Formatter):
-    """One JSON object a line: time, level, logger, and the record's own fields: those given as
-    `extra={"fields": {...}}` (the access log: no JSON text built only to be parsed again), or
-    the message's if it is a JSON object, else the message."""
-
-    def format(self, record: logging.LogRecord) -> str:
-        entry: dict[str, Any] = {
-            "ts": self.formatTime(record, "%Y-%m-%dT%H:%M:%S"),
-            "level": record.levelname.lower(),
-            "logger": record.name,
-        }
-        fields = record.__dict__.get("fields")
-        message = record.getMessage()
-        parsed: object = fields
-        if not isinstance(fields, dict):
-            try:
-                parsed = json.loads(message)
-            except ValueError:
-                parsed = None
-        if isinstance(parsed, dict):
-            entry.update(parsed)
-        else:
-            entry["message"] = message
-        if record.exc_info:
-            entry["exception"] = self.formatException(record.exc_info)
-        return json.dumps(entry, default=str)
-
-
-def configure_logging(level: str) -> None:
-    """Send SafeGate's and uvicorn's logs to stderr as JSON lines."""
-    handler = logging.StreamHandler()
-    handler.setFormatter(JsonLogFormatter())
-    for name in ("safegate", "uvicorn", "uvicorn.error"):
-        logger = logging.getLogger(name)
-        logger.handlers = [handler]
-        logger.setLevel(level.upper())
-        logger.propagate = False

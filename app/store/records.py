@@ -157,3 +157,13 @@ class SeedReport(_Record):
     new_versions: tuple[str, ...] = ()
     unchanged: tuple[str, ...] = ()
     skipped_user: tuple[str, ...] = ()
+
+
+class TemplateChange(_Record):
+    """One template an import writes: its content (as a new version when `new_version`), the
+    status it ends with, and the version the import was planned against (None: a new id)."""
+
+    template: HazardTemplate
+    status: TemplateStatus
+    new_version: bool
+    base_version: int | None

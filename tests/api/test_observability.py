@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from fastapi.testclient import TestClient
 
-from app.api.observability import JsonLogFormatter
+from app.api.logs import JsonLogFormatter
 from app.config import Settings
 from app.main import create_app
 

@@ -11,10 +11,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from fastapi import APIRouter
+from fastapi import APIRouter, Response
 from pydantic import BaseModel, Field
 
 from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.schemas import GateResponse, gate_response
 from app.services import extensions
 from app.services.extensions import PendingClass, WaitingRequest
@@ -90,6 +91,9 @@ def reevaluate_class(
 
 
 @router.post("/gate/{request_id}/reevaluate", response_model=GateResponse)
-def reevaluate_request(request_id: str, services: ServicesDep, _: CuratorKey) -> GateResponse:
+def reevaluate_request(request_id: str, services: ServicesDep, _: CuratorKey,
+                       response: Response) -> GateResponse:
     """Decide a waiting request again with today's library (its chain's latest decision)."""
-    return gate_response(extensions.reevaluate_request(services, request_id))
+    decided = extensions.reevaluate_request(services, request_id)
+    response.headers[GATE_REQUEST_ID_HEADER] = str(decided.record.id)
+    return gate_response(decided)

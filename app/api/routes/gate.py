@@ -15,6 +15,7 @@ from fastapi import APIRouter, Body, Response
 
 from app.api.deps import ServicesDep
 from app.api.limits import check_gate_request
+from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.schemas import GateResponse, gate_response
 from app.domain.models import GateRequest
 from app.services import Services, gate
@@ -24,7 +25,10 @@ router = APIRouter(tags=["gate"])
 
 
 def _json(decided: Decided) -> Response:
-    return Response(gate_response(decided).model_dump_json(), media_type="application/json")
+    # The audit record's id also in a header, so the access log line links the HTTP request id
+    # to the decision it produced (app/api/observability.py).
+    return Response(gate_response(decided).model_dump_json(), media_type="application/json",
+                    headers={GATE_REQUEST_ID_HEADER: str(decided.record.id)})
 
 
 def _decide(services: Services, request: GateRequest) -> Response:

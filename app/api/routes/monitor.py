@@ -7,12 +7,15 @@
 - `GET /monitor/{session_id}/summary`: the MonitorSummary.
 A websocket to an unknown session is accepted, told `{"type": "error", ...}` and closed with
 code 4404; a database failure while loading closes with 1011. Nothing here decides anything.
+Each websocket logs `websocket_open`, then `websocket_close` (or `websocket_refused`) on
+`safegate.websocket` with its session id and channel; the request id comes with every line.
 """
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
+import logging
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, WebSocket, WebSocketDisconnect, status
@@ -28,6 +31,7 @@ from app.services.monitoring import MonitorService
 from app.services.monitoring_sessions import LiveSession
 
 router = APIRouter(tags=["monitor"])
+_log = logging.getLogger("safegate.websocket")
 
 CLOSE_NOT_FOUND = 4404
 CLOSE_UNAVAILABLE = 1011
@@ -117,7 +121,15 @@ async def monitor_summary(session_id: str, monitoring: MonitoringDep,
                                   **summary.to_wire())
 
 
-async def _refuse_connection(websocket: WebSocket, error: SafeGateError) -> None:
+def _log_socket(event: str, session_id: str, channel: str, **more: object) -> None:
+    if _log.isEnabledFor(logging.INFO):
+        _log.info(event, extra={"fields": {
+            "event": event, "session_id": session_id, "channel": channel, **more}})
+
+
+async def _refuse_connection(websocket: WebSocket, session_id: str, channel: str,
+                             error: SafeGateError) -> None:
+    _log_socket("websocket_refused", session_id, channel, reason=type(error).__name__)
     await websocket.send_json({"type": "error", "seq": None, "detail": error.detail,
                                "halted": False})
     code = CLOSE_NOT_FOUND if isinstance(error, NotFound) else CLOSE_UNAVAILABLE
@@ -133,9 +145,11 @@ async def monitor_socket(websocket: WebSocket, session_id: str,
     try:
         live = await monitoring.attach(session_id)
     except SafeGateError as error:
-        await _refuse_connection(websocket, error)
+        await _refuse_connection(websocket, session_id, "runtime", error)
         return
+    _log_socket("websocket_open", session_id, "runtime")
     flusher = asyncio.get_running_loop().create_task(monitoring.flush_periodically(live))
+    messages = 0
     try:
         while True:
             message = await websocket.receive()
@@ -143,11 +157,14 @@ async def monitor_socket(websocket: WebSocket, session_id: str,
                 break
             text = message.get("text")
             raw = text if text is not None else message.get("bytes")
+            messages += 1
             await websocket.send_text(await monitoring.handle(live, raw))
     except (WebSocketDisconnect, OSError):
         pass
     finally:
         flusher.cancel()
+        # Before the await: a cancelled handler (server shutdown) stops at the next await.
+        _log_socket("websocket_close", session_id, "runtime", messages=messages)
         await monitoring.detach(live)
 
 
@@ -187,7 +204,11 @@ async def events_socket(websocket: WebSocket, session_id: str,
     try:
         live = await monitoring.session(session_id)
     except SafeGateError as error:
-        await _refuse_connection(websocket, error)
+        await _refuse_connection(websocket, session_id, "events", error)
         return
-    with contextlib.suppress(WebSocketDisconnect, OSError):
-        await _forward_events(websocket, live, monitoring)
+    _log_socket("websocket_open", session_id, "events")
+    try:
+        with contextlib.suppress(WebSocketDisconnect, OSError):
+            await _forward_events(websocket, live, monitoring)
+    finally:
+        _log_socket("websocket_close", session_id, "events")

@@ -12,10 +12,12 @@ from app.store.repository.audit import AuditQueries
 from app.store.repository.contracts import ContractQueries
 from app.store.repository.monitoring import MonitorQueries
 from app.store.repository.template_documents import template_content_hash
-from app.store.repository.templates import TemplateQueries
+from app.store.repository.template_imports import TemplateImportQueries
 
 
-class Repository(TemplateQueries, AuditQueries, ContractQueries, MonitorQueries, AccessQueries):
+class Repository(
+    TemplateImportQueries, AuditQueries, ContractQueries, MonitorQueries, AccessQueries
+):
     """All of SafeGate's persistence: templates, audit trail, contracts, monitoring, keys, cache."""
 
 
