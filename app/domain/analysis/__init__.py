@@ -79,9 +79,14 @@ class SymbolicAnalyzer:
         self._theta = reject_from
         self._lexicon: Lexicon = load_lexicon()
         self._library = LibraryCache()
+        self._last: tuple[GateRequest, Understanding] | None = None
 
     def understand(self, request: GateRequest) -> Understanding:
-        """Step 1 alone: the command read into the plan it induces (the simulator uses it)."""
+        """Step 1 alone: the command read into the plan it induces (the simulator and the
+        task's scope use it); the reading `analyze` just made of this very request is reused."""
+        last = self._last  # one read of the slot: safe with several worker threads
+        if last is not None and last[0] is request:
+            return last[1]
         return understand(request, self._lexicon)
 
     def analyze(self, request: GateRequest,
@@ -97,6 +102,7 @@ class SymbolicAnalyzer:
         """
         library = list(templates)
         read = understand(request, self._lexicon)
+        self._last = (request, read)
         proposals: list[HazardProposal] = []
         unknowns = list(read.unknowns)
         steps = list(read.sketch.steps())

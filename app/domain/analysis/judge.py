@@ -119,15 +119,22 @@ def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | No
         action = planned.action
         args["object"], args["target"] = action.object, action.target
         for judged_condition in conditions:
-            if action.name == "Finish" and judged_condition.compiled(
-                    trace.states[0], args) is not True:
-                continue  # what the end must not hold was there before the task began
+            if action.name == "Finish":
+                before = judged_condition.compiled(trace.states[0], args)
+                if before is False or (before is None and not _people_leave(trace)):
+                    continue  # what the end must not hold was there before the task began
+                # (undecided before, but the command sends its people out: then it is not)
             value = judged_condition.compiled(trace.states[index], args)
             if value is False:
                 return True, judged_condition, index
             if value is None and worst is None:
                 worst = (False, judged_condition, index)
     return worst
+
+
+def _people_leave(trace: Trace) -> bool:
+    """Whether the plan has its people go out ("I'm off to work"): a Wait naming them."""
+    return any(p.action.name == "Wait" and p.action.params.get("away") for p in trace.steps)
 
 
 def judge(traces: Sequence[Trace], templates: Iterable[HazardTemplate], focus: Focus,

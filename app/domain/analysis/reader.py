@@ -469,8 +469,9 @@ class Reader:
         if not words:
             return None
         verb, rest = self._verb(words)
-        if verb is not None and (lexicon.schemas_of(verb)[:1] == ("put",)
-                                 or verb in ("turn", "set", "switch", "crank")):
+        if verb is not None and verb not in ("keep", "leave") and (
+                lexicon.schemas_of(verb)[:1] == ("put",) or verb in ("turn", "set", "switch",
+                                                                     "crank")):
             verb, rest = _heat_setting(verb, rest)
         if verb is not None and words[0] != lexicon.lemma(words[0]) and words[0].endswith("s"):
             # An imperative verb is never inflected: "lights off downstairs" names lights.
@@ -581,8 +582,12 @@ class Reader:
             chunks = [(p, c) for p, c in chunks if c or p != complement]
         roles += tuple((prep, NounPhrase("", pronoun="it")) for prep, chunk in chunks[1:]
                        if not chunk and prep in _PLACING)
-        return Clause(text, verb, lexicon.schemas_of(verb), "step", negated, objects, second,
-                      roles, manner, complement)
+        schemas = lexicon.schemas_of(verb)
+        if verb in ("keep", "leave") and complement in _DIRECTIVE_STATES and objects:
+            # "keep the oven on at 200", "leave the porch light on": bring about that state
+            schemas = lexicon.schemas_of(_DIRECTIVE_STATES[complement]) or schemas
+        return Clause(text, verb, schemas, "step", negated, objects, second, roles, manner,
+                      complement)
 
     def _action_noun(self, words: list[str]) -> tuple[str, list[str]] | None:
         """ "give the table a wipe" -> ("wipe", ["the", "table"]); "give it a stir"."""

@@ -130,6 +130,8 @@ def pour(builder: PlanBuilder, grounded: Grounded) -> None:
     target = dest.id if dest is not None and dest.id else None
     if target is None and grounded.recipient is not None and grounded.recipient.id:
         target = grounded.recipient.id
+    if target is None and objects and source is not None and source != objects[0]:
+        target = objects[0]  # "ladle a bowl of the chowder from the pot": into the bowl
     if dest is not None and dest.kind == "room" and target is not None:
         target = builder.surface(target)
     if source is None or target is None or not builder.acquire(source):

@@ -162,6 +162,9 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             if found.kind == "person" and prep in ("to", "over to") and recipient is None:
                 grounded.recipient = found
             grounded.destination = found
+    if grounded.destination is not None and grounded.destination.ids and set(
+            grounded.destination.ids) <= own:
+        grounded.destination = None  # "put the roast in": not in itself
     if own:
         # "it" after "a cup of tea, milk and two sugars" is the first thing named; "them" is all
         g.last_object = tuple(dict.fromkeys(i for r in objects for i in r.ids))

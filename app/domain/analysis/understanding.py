@@ -12,7 +12,7 @@ all the command says, so the gate asks what to do. Fails: never.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
 from app.domain.analysis.grounding import Grounder
@@ -24,6 +24,7 @@ from app.domain.analysis.sketch import Sketch
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.models import GateRequest, UnknownFact
 from app.domain.world import WorldState, state_from_request
+from app.domain.world.entities import frozen_mapping
 
 
 @dataclass
@@ -89,6 +90,10 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
             apply_clause(builder, item)
             if len(builder.sketch.literal) + len(builder.notes) == before and _acts(item):
                 idle.append(item)
+    leaving = _leaving(request.command, grounder)
+    if leaving and any(True for _ in builder.sketch.steps()):
+        # "I'm off to work", "so it's hot when we get back": the speaker is out meanwhile
+        builder.act("Wait", kind="enabling", seconds=3600.0, away=",".join(leaving))
     builder.sketch.fast = "fast" in reading.manner
     builder.sketch.leave = "leave" in reading.manner or _kept_going(reading.clauses)
     scene = grounder.scene()
@@ -133,6 +138,35 @@ def _kept_going(clauses: tuple[Clause, ...]) -> bool:
                 "till", "until", "when", "so", "so that", "for when"))
             kept = kept or bool(words & _KEEP_STATES) or clause.opener in ("till", "until")
     return returning and kept
+
+
+_SPEAKER_LEAVES = re.compile(
+    r"\b(?:(i|we)(?:'m|'re| am| are)(?: all)? (?:off\b|going out|heading out|leaving|"
+    r"out for|away for|going to (?:work|bed|the)|popping out|nipping out)"
+    r"|(?:when|till|until|before) (i|we)(?: get| come)? (?:back|home|return)"
+    r"|(?:when|till|until) (i|we)(?:'m|'re| am| are) (?:back|home)"
+    r"|while (i|we)(?:'m|'re| am| are) (?:out|away|gone|at work|asleep|in bed))")
+
+
+def _leaving(command: str, grounder: Grounder) -> tuple[str, ...]:
+    """Who the command says will be out of the home (or in bed) while the task's result
+    stands: the speaker for "I", the adults of the household for "we"."""
+    found = _SPEAKER_LEAVES.search(command.lower().replace("\u2019", "'"))
+    if found is None:
+        return ()
+    speaker = next(g for g in found.groups() if g)
+    known = grounder.people.keys()
+    user = grounder.user_id
+    if user not in known or grounder.people[user].properties.get("cognitive_state") is None:
+        # Someone heading out to work or the match is awake and alert.
+        person = grounder.people[user]
+        grounder.people[user] = replace(person, properties=frozen_mapping(
+            {**person.properties, "cognitive_state": "alert"}))
+    if speaker == "i":
+        return (user,)
+    adults = [p.id for p in grounder.people.values()
+              if p.properties.get("age_group") in ("adult", "older_adult", None)]
+    return tuple(dict.fromkeys([grounder.user_id, *adults]))
 
 
 def _acts(item: Grounded) -> bool:

@@ -234,8 +234,10 @@ _SPECS = (
         effects=("nothing changes; conditions on the end of the task are checked here",)),
     ActionSpec(
         "Wait", "do nothing for a while",
-        params=(Param("seconds", "number", "how long to wait"),),
-        effects=("the robot stands still",)),
+        params=(Param("seconds", "number", "how long to wait"),
+                Param("away", "string", "people who leave the home meanwhile (ids, comma "
+                      "separated): what the command says of its speaker going out")),
+        effects=("the robot stands still; the people named in `away` are out of the home",)),
 )
 
 ACTION_SPECS: dict[str, ActionSpec] = {spec.name: spec for spec in _SPECS}

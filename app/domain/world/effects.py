@@ -212,6 +212,9 @@ def _pour(draft: _Draft, action: Action) -> None:
     if holds is True:
         already = draft.value("contents", target) if draft.value(
             "filled", target) is not False else ""
+        if isinstance(already, Unknown) and "contents" not in draft.before.objects[
+                target].properties and draft.before.objects[target].kind.name in _SERVING:
+            already = ""  # a bowl or cup the scene lists with nothing in it is empty
         facts = {"filled": poured, "contents": mixed(already, draft.value("contents", obj))}
         for temperature in ("hot", "cold"):
             value = draft.value(temperature, obj)
@@ -330,6 +333,21 @@ def _record(draft: _Draft, action: Action) -> None:
     draft.robot = replace(draft.robot, recording=True)
 
 
+AWAY = "away"
+"""Where people are once they have left the home (a room of no layout)."""
+
+
+def _people_leave(draft: _Draft, action: Action) -> None:
+    away = action.params.get("away")
+    for person in str(away).split(",") if away else ():
+        if person in draft.people:
+            draft.people[person] = replace(draft.people[person], room=AWAY, position=None)
+
+
+_SERVING = frozenset({"Bowl", "Plate", "Cup", "Mug", "Glass", "WineGlass", "ShotGlass"})
+"""Dishes food and drink are served in; one the scene states nothing in is taken as empty."""
+
+
 def mixed(first: FactValue, second: FactValue) -> FactValue:
     """What a container holds once `second` is added to `first` (a liquid poured in, a
     spray): both substances, so a later `contains` finds either; unknown if either is."""
@@ -377,7 +395,7 @@ _EFFECTS: dict[str, Callable[[_Draft, Action], None]] = {
     "Assist": lambda d, a: _go_to_entity(d, a, a.object or ""),
     "Record": _record,
     "Finish": lambda d, a: None,
-    "Wait": lambda d, a: None,
+    "Wait": lambda d, a: _people_leave(d, a),
 }
 
 

@@ -27,9 +27,15 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
         ("alcohol rubbing_alcohol ethanol isopropyl gasoline petrol kerosene lighter_fluid "
          "paint_thinner acetone", "liquid toxic flammable"),
         ("peanut peanuts peanut_butter nut nuts almond almonds walnut cashew egg eggs wheat "
-         "flour gluten shellfish shrimp fish soy sesame", "food allergen"),
+         "flour gluten shellfish shrimp fish soy sesame satay pesto praline marzipan nutella "
+         "hazelnut pistachio pecan prawn prawns crab lobster mussels clams oysters scampi",
+         "food allergen"),
         ("bread cereal pasta rice sugar salt candy fruit apple banana vegetable cookie "
-         "cookies cake chocolate cheese", "food"),
+         "cookies cake chocolate cheese chicken beef pork lamb meat sausage bacon ham turkey "
+         "curry stew chowder salad sandwich pizza burger noodles sauce gravy porridge oats "
+         "jam honey butter biscuit biscuits crisps grapes grape orange berries potato "
+         "potatoes beans lentils tofu omelette pancake pancakes toast leftovers dinner lunch "
+         "breakfast", "food"),
         ("pills pill medicine medication tablets ibuprofen aspirin paracetamol acetaminophen "
          "insulin antibiotics vitamins warfarin codeine diazepam naproxen sleeping_pills",
          "medication"),
@@ -39,8 +45,14 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
 }
 # An allergen family a person may name, and the substances that belong to it.
 _FAMILIES: dict[str, frozenset[str]] = {
-    "peanut": frozenset({"peanut", "peanuts", "peanut_butter"}),
-    "nut": frozenset({"nut", "nuts", "almond", "almonds", "walnut", "cashew", "peanut"}),
+    "peanut": frozenset({"peanut", "peanuts", "peanut_butter", "satay"}),
+    "nut": frozenset({"nut", "nuts", "almond", "almonds", "walnut", "cashew", "peanut",
+                      "hazelnut", "pistachio", "pecan", "pesto", "praline", "marzipan",
+                      "nutella", "satay"}),
+    "tree_nut": frozenset({"almond", "almonds", "walnut", "cashew", "hazelnut", "pistachio",
+                           "pecan", "pesto", "praline", "marzipan", "nutella"}),
+    "shellfish": frozenset({"shellfish", "shrimp", "prawn", "prawns", "crab", "lobster",
+                            "mussels", "clams", "oysters", "scampi"}),
     "dairy": frozenset({"milk", "cream", "yogurt", "cheese"}),
     "milk": frozenset({"milk", "cream", "yogurt", "cheese"}),
     "egg": frozenset({"egg", "eggs"}),
@@ -74,7 +86,7 @@ _INTERACTING = frozenset(frozenset(pair) for pair in (
     ("alcohol", "anticoagulant"),
 ))
 _EMPTY = frozenset({"", "none", "nothing", "empty"})
-_SPLIT = re.compile(r"[\s,;/]+")
+_SPLIT = re.compile(r"[\s,;/()\[\]&+.:]+")
 
 
 def normalize(text: str) -> str:
