@@ -173,7 +173,10 @@ class Monitor:
             return self._after(parsed)
         except OutOfStep as error:
             self.counters.errors += 1
-            return Verdict("error", seq_of(decoded), detail=error.detail,
+            detail = error.detail if self._sync_reason is not None else (
+                f"{error.detail}: resynchronise (go on from 'resync', or send 'sync' with the "
+                f"current state)")
+            return Verdict("error", seq_of(decoded), detail=detail,
                            extra={"resync": self.resync()})
         except InvalidInput as error:
             return self._refuse(seq_of(decoded), error.detail)
