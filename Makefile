@@ -59,8 +59,9 @@ bench-sealed: $(STAMP)
 	done
 
 ## Performance benchmarks: each prints a table. (`_*.py` are their helpers;
-## analysis_stability.py is a record/check tool for speed work, run by hand.)
-PERF_BENCHMARKS := $(filter-out bench/perf/analysis_stability.py,$(wildcard bench/perf/[!_]*.py))
+## analysis_stability.py is a record/check tool for speed work, and monitor_ab.py compares
+## two checkouts; both are run by hand.)
+PERF_BENCHMARKS := $(filter-out bench/perf/analysis_stability.py bench/perf/monitor_ab.py,$(wildcard bench/perf/[!_]*.py))
 perf: $(STAMP)
 	@for f in $(PERF_BENCHMARKS); do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 

@@ -111,3 +111,49 @@ def safe_actions(count: int) -> list[dict[str, Any]]:
     """`count` actions the contract allows: walking back and forth between two objects."""
     return [{"action": "GoToObject", "object": "mug_1" if i % 2 == 0 else "counter_1"}
             for i in range(count)]
+
+
+# The knife-to-the-block task: the robot fetches the knife from the kitchen counter while the
+# owner sits in the living room. Carrying the blade fast near a person breaks the contract, so
+# whether step 3 (`CARRY_KNIFE_FAST`) is allowed depends on what steps 1 and 2 left: the robot
+# holding the knife. Checked against the initial state (the knife still on the counter) it
+# would be allowed twice; that is the forgotten state a monitor must never resume from.
+KNIFE_REQUEST: dict[str, Any] = {
+    "command": "put the knife back in the block",
+    "scene": {
+        "layout": {"rooms": ["kitchen", "living_room"],
+                   "connections": [["kitchen", "living_room"]]},
+        "objects": [
+            {"id": "counter_1", "type": "CounterTop", "room": "kitchen"},
+            {"id": "knife_1", "type": "Knife", "room": "kitchen", "on": "counter_1",
+             "properties": {"sharp": True}},
+            {"id": "block_1", "type": "KnifeBlock", "room": "kitchen", "on": "counter_1"},
+        ],
+        "people": [{"id": "p1", "role": "owner", "room": "living_room", "posture": "sitting",
+                    "properties": {"age_group": "adult"}}],
+    },
+    "user": {"person_id": "p1", "age_group": "adult"},
+    "robot": {"name": "stretch", "room": "kitchen", "payload_kg": 2.0, "max_speed_mps": 1.0,
+              "skills": ["navigate", "pick", "place"]},
+}
+KNIFE_CONTRACT = Contract(
+    invariants=(
+        condition(INVARIANT, "sharp.blade_carried_near_person.slow_with_blade_near_people",
+                  "forall p: person . holding(robot, #knife_1) and sharp(#knife_1) and "
+                  "near(robot, p) -> speed(robot) <= 0.25",
+                  description="Move slowly whenever the robot holds the blade near a person"),
+    ),
+    guards=(
+        condition(GUARD, "sharp.blade_carried_near_person.never_throw_blade",
+                  "@object != #knife_1 or not sharp(#knife_1)", "ThrowObject"),
+    ),
+    aborts=(),
+)
+GO_TO_KNIFE = {"action": "GoToObject", "object": "knife_1"}
+PICK_KNIFE = {"action": "PickupObject", "object": "knife_1"}
+CARRY_KNIFE_FAST = {"action": "navigate", "target": "living_room", "speed": 1.0}
+
+
+def store_knife_contract(repository: Repository) -> str:
+    """Store the knife-to-the-block task's contract; returns its id."""
+    return store_contract(repository, KNIFE_CONTRACT, KNIFE_REQUEST)

@@ -3,7 +3,7 @@
 - `GateClient` (HTTP, httpx): `gate`, `answer`, `decision`, `contract`, `planner_constraints`,
   `verify`, `open_monitor`, `monitor_summary`.
 - `MonitorClient` (websocket): `before`, `after`, and `step(action, execute)`, which raises
-  `MonitorHalted` when the session halts.
+  `MonitorHalted` when the session halts; `sync(state, seq)` after a `MonitorResync`.
 - `MonitorEvents` (websocket): a dashboard's stream of violations and refusals.
 Errors: `app.client.errors` (one tree under `SafeGateClientError`). The SDK imports nothing from
 the server side, only httpx and websockets.
@@ -14,6 +14,7 @@ from app.client.errors import (
     MonitorConnectionError,
     MonitorError,
     MonitorHalted,
+    MonitorResync,
     SafeGateClientError,
 )
 from app.client.gate import GateClient
@@ -27,5 +28,6 @@ __all__ = [
     "MonitorError",
     "MonitorEvents",
     "MonitorHalted",
+    "MonitorResync",
     "SafeGateClientError",
 ]

@@ -3,6 +3,7 @@
 SafeGateClientError
 ├── ApiError            SafeGate answered with an error status (carries the problem+json body)
 ├── MonitorError        the monitor answered `error`: the message was not checked (not allowed)
+│   └── MonitorResync   ... because it does not follow the session's last step: resynchronise
 ├── MonitorHalted       the monitor halted the session: a violation now, or an earlier one
 └── MonitorConnectionError   the websocket could not be opened, or closed while waiting
 
@@ -34,6 +35,18 @@ class MonitorError(SafeGateClientError):
     def __init__(self, answer: dict[str, Any]) -> None:
         self.answer = answer
         super().__init__(str(answer.get("detail", "the monitor answered an error")))
+
+
+class MonitorResync(MonitorError):
+    """The message does not follow the session's last stored step. `last_seq` (the last
+    finished action) and `pending_seq` (an allowed action awaiting its `after`) say where the
+    monitor stands: go on from there, or send your current state with `MonitorClient.sync`."""
+
+    def __init__(self, answer: dict[str, Any]) -> None:
+        super().__init__(answer)
+        position = answer.get("resync") or {}
+        self.last_seq: int | None = position.get("last_seq")
+        self.pending_seq: int | None = position.get("pending_seq")
 
 
 class MonitorHalted(SafeGateClientError):

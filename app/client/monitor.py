@@ -5,11 +5,14 @@ In: SafeGate's base URL, a session id from `GateClient.open_monitor`, and per ac
 (`{"scene": {...}, "robot": {...}}`, partial: listed entities replace those with the same id).
 Out: nothing when the monitor allows; the after-state your `execute` callback observed.
 Fails: `MonitorHalted` when the session halts (now or earlier): stop the robot;
-`MonitorError` when a message could not be checked (the action is not allowed);
+`MonitorError` when a message could not be checked (the action is not allowed), and its subclass
+`MonitorResync` when it does not follow the session's last stored step;
 `MonitorConnectionError` when the socket cannot be opened, closes, or answers out of order.
 
 The client numbers its messages `seq` = first_seq, first_seq + 1, ... A runtime that reconnects
-to a session goes on from the session's `last_seq` + 1 (see `GateClient.monitor_summary`).
+to a session goes on from the session's `last_seq` + 1 (see `GateClient.monitor_summary`). After
+a `MonitorResync` whose `last_seq` is not its own last finished action, it sends its whole current
+state with `sync(state, seq)` and goes on from `seq` + 1.
 """
 
 from __future__ import annotations
@@ -22,7 +25,12 @@ from typing import Any
 from websockets.exceptions import ConnectionClosed, WebSocketException
 from websockets.sync.client import ClientConnection, connect
 
-from app.client.errors import MonitorConnectionError, MonitorError, MonitorHalted
+from app.client.errors import (
+    MonitorConnectionError,
+    MonitorError,
+    MonitorHalted,
+    MonitorResync,
+)
 from app.client.gate import auth_headers
 
 JsonObject = dict[str, Any]
@@ -104,6 +112,8 @@ class MonitorClient:
             return answer
         if kind in ("violation", "halted"):
             raise MonitorHalted(answer)
+        if isinstance(answer.get("resync"), dict):
+            raise MonitorResync(answer)
         raise MonitorError(answer)
 
     def before(self, action: Mapping[str, Any], state: Observation | None = None) -> int:
@@ -136,6 +146,25 @@ class MonitorClient:
         if state is not None:
             message["state"] = dict(state)
         self._exchange(message)
+        self._running = None
+
+    def sync(self, state: Observation, seq: int | None = None) -> None:
+        """Resynchronise: tell the monitor the robot's whole current state after action `seq`.
+
+        Args:
+            state: `{"scene": {...}, "robot": {...}}`, both required; entities not listed keep
+                the monitor's last known state, so list everything that may have changed.
+            seq: the last action the robot finished (default: the last one this client
+                numbered); the next action gets `seq` + 1.
+
+        Raises:
+            MonitorHalted: the state breaks an invariant or an abort condition.
+            MonitorError: the message could not be checked (e.g. `seq` before the monitor's
+                last finished action).
+        """
+        seq = self.next_seq - 1 if seq is None else seq
+        self._exchange({"type": "sync", "seq": seq, "state": dict(state)})
+        self.next_seq = seq + 1
         self._running = None
 
     def step(self, action: Mapping[str, Any],

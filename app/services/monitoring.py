@@ -4,17 +4,24 @@ In: a contract id (and optionally an initial state) to open a session; then each
 of a session. Out: the session id; one JSON answer per message; events for `/events` listeners;
 the MonitorSummary.
 
-Persistence. A session row holds its contract, initial state, counters and halt. The halt is
-written synchronously *before* the violation is answered or published; if that write fails the
-session stays halted in memory, the violation is still answered (halting is the safe side) and
-the write is retried at every flush. The per-message path writes nothing else: exchanges are kept
-in memory and written as one `messages` event per flush (every `FLUSH_SECONDS` while a runtime is
-connected, when `FLUSH_ENTRIES` pile up, and when the last connection closes), together with the
-counters. After a restart a halted session comes back halted from its row; a running one is
-rebuilt by replaying its logged messages through a fresh monitor, which also restores a pending
-action. A hard crash may lose the last `FLUSH_SECONDS` of a running session's log (never a halt).
-One process owns a session: run one worker (the embedded default), or route a session's traffic
-to one worker.
+Persistence: a step is durable before it is answered. A session row holds its contract, initial
+state, counters and halt; its event log holds every exchange (`messages` events). Each message
+that changes the session (an `allow`, a `violation`) is written, with its halt, before its answer
+is sent: a group commit (`monitoring_commits.py`) writes what all sessions recorded meanwhile in
+one transaction. Refusals (`error`, `halted`) change nothing and are written with the next
+commit. So after a crash, even a SIGKILL, a session rebuilt from the database (its logged messages
+replayed through a fresh monitor, which also restores a pending action; a halted one from its
+row) stands exactly where its last answer left it. A replay that does not give the answers the log
+says were given (the contract's meaning or the monitor changed since) halts if it halts, and
+otherwise asks the runtime to resynchronise rather than go on from a state nobody was told about.
+If a commit fails, the answer is an `error` (never an allow) and the session is reloaded from the
+database before its next message; a violation is answered anyway (halting is the safe side) and
+its halt write retried. Counters are written with the halt, and a halted session's again when
+its runtime disconnects or every `FLUSH_SECONDS` (a running session's are rebuilt by replay).
+Messages whose seq does not follow the last durable step get an `error` asking the runtime to
+resynchronise (`app/domain/monitor/`).
+One process owns a session at a time: a second process that appended to it makes the first one's
+next write fail (the event number is taken), so it reloads instead of answering from a stale state.
 Fails: `NotFound` (unknown contract or session), `Conflict` (exhausted contract), `FormulaError`
 (a contract that cannot be monitored), `Unavailable` (database) from `open_session`/`session`.
 """
@@ -39,11 +46,13 @@ from app.domain.monitor import (
     MonitorCounters,
     MonitorSummary,
     MonitorViolation,
+    Verdict,
     decode_message,
     replay,
 )
 from app.domain.world import WorldState, state_from_request
 from app.services.container import Services
+from app.services.monitoring_commits import StepCommitter
 from app.services.monitoring_sessions import (
     UNDECODABLE,
     LiveSession,
@@ -53,9 +62,6 @@ from app.services.monitoring_sessions import (
 from app.store.records import ContractStatus, MonitorSessionRecord
 
 FLUSH_SECONDS = 0.25
-FLUSH_ENTRIES = 2048
-# Large batches: each flush briefly competes with the event loop for the GIL, so fewer, larger
-# writes keep the per-action tail low. The durability window is FLUSH_SECONDS either way.
 COMPILED_CACHE = 256
 _log = logging.getLogger("safegate.monitoring")
 
@@ -71,6 +77,7 @@ class MonitorService:
         self._loading: dict[str, asyncio.Lock] = {}
         self._compiled: OrderedDict[str, CompiledContract] = OrderedDict()
         self._compiled_lock = threading.Lock()
+        self._commits = StepCommitter(self._repository)
 
     # Opening and loading sessions.
     def _compiled_contract(self, contract_id: str, body: dict[str, Any]) -> CompiledContract:
@@ -125,14 +132,26 @@ class MonitorService:
         if record.halted and record.halt_violation is not None:
             monitor = Monitor(compiled, world, counters=MonitorCounters.from_json(record.counters),
                               violation=MonitorViolation.from_wire(record.halt_violation))
-            return LiveSession(session_id, record.contract_id, monitor)
+            return LiveSession(session_id, record.contract_id, monitor,
+                               next_event=self._repository.last_monitor_event_seq(session_id) + 1)
         monitor = Monitor(compiled, world)
+        last_event, diverged = 0, 0
         for event in self._repository.list_monitor_events(session_id):
-            if event.type == "messages":
-                replay(monitor, replayable(list(event.payload.get("messages", []))))
-        live = LiveSession(session_id, record.contract_id, monitor)
+            last_event = event.seq
+            if event.type != "messages":
+                continue
+            entries = replayable(list(event.payload.get("messages", [])))
+            verdicts = replay(monitor, [entry["in"] for entry in entries])
+            diverged += sum(verdict.type != entry.get("out")
+                            for entry, verdict in zip(entries, verdicts, strict=True))
+        live = LiveSession(session_id, record.contract_id, monitor, next_event=last_event + 1)
         if monitor.halted:  # only if the contract's meaning changed since; halting is safe
             live.halt_saved = False
+        elif diverged:
+            _log.warning("monitor session %s: %d logged answers differ when replayed; asking "
+                         "its runtime to resynchronise", session_id, diverged)
+            monitor.require_sync("this session's state could not be rebuilt exactly after a "
+                                 "restart")
         return live
 
     async def session(self, session_id: str) -> LiveSession:
@@ -151,7 +170,7 @@ class MonitorService:
                 live = await anyio.to_thread.run_sync(self._restore, session_id)
                 self._live[session_id] = live
                 if not live.halt_saved:
-                    await self._save_halt(live)
+                    await self._commits.durable(live)
         self._loading.pop(session_id, None)
         return live
 
@@ -162,7 +181,7 @@ class MonitorService:
             NotFound: no such session.
         """
         live = self._live.get(session_id)
-        if live is None:
+        if live is None or live.broken:
             live = await anyio.to_thread.run_sync(self._restore, session_id)
         return live.contract_id, live.monitor.summary()
 
@@ -177,7 +196,12 @@ class MonitorService:
         """A runtime disconnects: write what is pending; unload the session once unused."""
         live.clients -= 1
         await self.flush(live)
-        if live.clients == 0 and not live.subscribers and not live.log and live.halt_saved:
+        self._unload_if_unused(live)
+
+    def _unload_if_unused(self, live: LiveSession) -> None:
+        if (live.clients == 0 and not live.subscribers and live.halt_saved
+                and (live.broken or (not live.log and not live.waiters))
+                and self._live.get(live.id) is live):
             self._live.pop(live.id, None)
 
     def subscribe(self, live: LiveSession) -> Subscriber:
@@ -190,16 +214,22 @@ class MonitorService:
     def unsubscribe(self, live: LiveSession, subscriber: Subscriber) -> None:
         """A listener leaves."""
         live.subscribers.discard(subscriber)
-        if live.clients == 0 and not live.subscribers and not live.log and live.halt_saved:
-            self._live.pop(live.id, None)
+        self._unload_if_unused(live)
 
     # The per-message path.
     async def handle(self, live: LiveSession, raw: str | bytes | None) -> str:
         """Check one runtime message and return the answer to send (JSON text).
 
-        A violation's halt is durable (or its write has failed and is being retried) before
-        this returns; nothing else waits for the database.
+        An `allow` or a `violation` is returned only once the step (and its halt) is
+        committed; if the commit fails, an allow becomes an `error` and the session is reloaded
+        from the database before the next message. Refusals wait for nothing.
         """
+        if live.broken:
+            try:
+                await self._reload(live)
+            except SafeGateError as error:
+                return json.dumps(_not_checked(raw, f"{error.detail}; the message was not "
+                                                    f"checked: send it again").to_wire())
         try:
             message: object = decode_message(raw)
         except InvalidInput:
@@ -210,70 +240,60 @@ class MonitorService:
             message = {UNDECODABLE: "the message is nested too deeply to decode"}
         verdict = live.monitor.step(message)
         live.record(message, verdict)
-        if verdict.type == "violation":
-            if verdict.violation is not None:
-                self._services.metrics.monitor_halts.labels(verdict.violation.kind).inc()
-            live.halt_saved = False
-            await self._save_halt(live)
+        if verdict.type in ("allow", "violation"):
+            if verdict.type == "violation":
+                if verdict.violation is not None:
+                    self._services.metrics.monitor_halts.labels(verdict.violation.kind).inc()
+                live.halt_saved = False
+            if not await self._commits.durable(live) and verdict.type == "allow":
+                verdict = Verdict("error", verdict.seq, detail=(
+                    "the step could not be stored, so it is not allowed: send the same message "
+                    "again (the session goes on from its last stored step)"))
         event = live.event_for(verdict)
         if event is not None:
             live.publish(event)
-        if len(live.log) >= FLUSH_ENTRIES and not live.flush_lock.locked():
-            asyncio.get_running_loop().create_task(self.flush(live))
         return json.dumps(verdict.to_wire())
 
-    async def _save_halt(self, live: LiveSession) -> None:
-        violation = live.monitor.violation
-        if violation is None:
-            return
-        counters, wire = live.monitor.counters.to_json(), violation.to_wire()
-        try:
-            await anyio.to_thread.run_sync(lambda: self._repository.update_monitor_session(
-                live.id, counters=counters, halt_violation=wire))
-            live.halt_saved = True
-        except SafeGateError:
-            _log.exception("could not persist the halt of monitor session %s; will retry",
-                           live.id)
+    async def _reload(self, live: LiveSession) -> None:
+        """Put a broken session back where the database has it (after a failed write).
+
+        Raises:
+            Unavailable: the database could not be read.
+        """
+        async with live.reload_lock:
+            if not live.broken:
+                return
+            restored = await anyio.to_thread.run_sync(self._restore, live.id)
+            live.monitor, live.next_event = restored.monitor, restored.next_event
+            live.log, live.written = [], live.recorded
+            live.counters_at, live.halt_saved = live.recorded, restored.halt_saved
+            live.broken = False
+            if not live.halt_saved:
+                await self._commits.durable(live)
 
     async def flush(self, live: LiveSession) -> None:
-        """Write the pending log entries and counters (and retry an unsaved halt).
-
-        Writes run as tasks shielded from cancellation and each flush first waits for the
-        previous one, so batches reach the log whole and in order even when a connection
-        is torn down mid-write.
-        """
-        async with live.flush_lock:
-            if live.writing is not None:
-                await asyncio.shield(live.writing)
-            if not live.halt_saved:
-                await self._save_halt(live)
-            if not live.log and not live.counters_dirty:
-                return
-            entries, live.log = live.log, []
-            live.counters_dirty = False
-            live.writing = asyncio.get_running_loop().create_task(
-                self._write(live, entries, live.monitor.counters.to_json()))
-            await asyncio.shield(live.writing)
-
-    async def _write(self, live: LiveSession, entries: list[dict[str, Any]],
-                     counters: dict[str, Any]) -> None:
-        def write() -> None:
-            # Counters first: if the append then fails, re-queueing duplicates nothing.
-            self._repository.update_monitor_session(live.id, counters=counters)
-            if entries:
-                self._repository.append_monitor_event(live.id, "messages",
-                                                      {"messages": entries})
-
-        try:
-            await anyio.to_thread.run_sync(write)
-        except SafeGateError:
-            _log.exception("could not write the log of monitor session %s", live.id)
-            live.log[:0] = entries
-            live.counters_dirty = True
+        """Write what is pending: refusals not yet logged, an unsaved halt, and a halted
+        session's counters (the refusals it counted since its halt)."""
+        if live.broken:
+            return
+        if live.monitor.halted and live.counters_at != live.recorded:
+            live.counters_dirty = True  # a running session's counters come back by replay
+        if live.log or live.counters_dirty or not live.halt_saved:
+            await self._commits.durable(live)
 
     async def flush_periodically(self, live: LiveSession) -> None:
         """Flush every `FLUSH_SECONDS` until cancelled (one task per runtime connection)."""
         while True:
             await asyncio.sleep(FLUSH_SECONDS)
-            if live.log or live.counters_dirty or not live.halt_saved:
-                await self.flush(live)
+            await self.flush(live)
+
+
+def _not_checked(raw: object, detail: str) -> Verdict:
+    """An error for a message the monitor could not look at (its seq echoed if readable)."""
+    try:
+        decoded = decode_message(raw)
+    except (InvalidInput, RecursionError):
+        decoded = None
+    seq = decoded.get("seq") if isinstance(decoded, dict) else None
+    return Verdict("error", seq if isinstance(seq, int) and not isinstance(seq, bool) else None,
+                   detail=detail)

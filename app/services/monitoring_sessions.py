@@ -1,7 +1,7 @@
 """The in-memory side of a monitoring session: its monitor, its unwritten log, its subscribers.
 
 In: a `Monitor` for a stored session. Out: `LiveSession`, which the monitoring service steps,
-flushes and publishes from, and `Subscriber`, one per `/events` listener (a bounded queue: a
+commits and publishes from, and `Subscriber`, one per `/events` listener (a bounded queue: a
 listener too slow to keep up is cut off rather than allowed to slow the monitor down).
 Fails: never; this module does no I/O.
 """
@@ -43,20 +43,31 @@ class Subscriber:
 class LiveSession:
     """A session loaded in this process.
 
-    `log` holds entries not yet written to the event log; `halt_saved` is False only between
-    a violation and the moment its halt is durable (or while a failed write awaits a retry).
+    `log` holds entries not yet handed to a write; `recorded` counts every entry ever recorded
+    and `written` those committed (so `written == recorded` when everything answered is durable);
+    `waiters` are answers waiting for their entry to be committed. `next_event` is the number
+    the next write gives its `messages` event. `halt_saved` is False only between a violation and
+    the moment its halt is durable (or while a failed write awaits a retry); `counters_dirty`
+    asks the next write to store the counters, `counters_at` is `recorded` when they last were.
+    `broken`: a write failed, and the monitor may be ahead of the database; it is reloaded
+    before the next message is checked.
     """
 
     id: str
     contract_id: str
     monitor: Monitor
+    next_event: int = 1
     log: list[dict[str, Any]] = field(default_factory=list)
+    recorded: int = 0
+    written: int = 0
+    waiters: list[tuple[int, asyncio.Future[bool]]] = field(default_factory=list)
     counters_dirty: bool = False
+    counters_at: int = 0
     halt_saved: bool = True
+    broken: bool = False
+    reload_lock: asyncio.Lock = field(default_factory=asyncio.Lock)
     clients: int = 0
     subscribers: set[Subscriber] = field(default_factory=set)
-    flush_lock: asyncio.Lock = field(default_factory=asyncio.Lock)
-    writing: asyncio.Task[None] | None = None
 
     def record(self, message: object, verdict: Verdict) -> None:
         """Remember one exchange for the event log (and for replay after a restart)."""
@@ -70,7 +81,7 @@ class LiveSession:
         if verdict.detail is not None and verdict.type == "error":
             entry["detail"] = verdict.detail
         self.log.append(entry)
-        self.counters_dirty = True
+        self.recorded += 1
 
     def publish(self, event: dict[str, Any]) -> None:
         """Send an event to every listener."""
@@ -95,5 +106,6 @@ class LiveSession:
 
 
 def replayable(entries: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """The logged inputs to feed a fresh monitor to rebuild a session's state and counts."""
-    return [entry["in"] for entry in entries if isinstance(entry.get("in"), dict)]
+    """The logged entries whose input can be fed to a fresh monitor again, to rebuild a
+    session's state and counts (each with its `in` and the `out` it was answered)."""
+    return [entry for entry in entries if isinstance(entry.get("in"), dict)]

@@ -23,8 +23,10 @@ def free_port() -> int:
 
 
 @contextmanager
-def running_server(extra_env: dict[str, str] | None = None) -> Iterator[str]:
-    """Yield the base URL of a one-worker SafeGate on a fresh SQLite file."""
+def running_server(extra_env: dict[str, str] | None = None,
+                   checkout: Path | None = None) -> Iterator[str]:
+    """Yield the base URL of a one-worker SafeGate on a fresh SQLite file (or the database
+    `extra_env` names), run from `checkout` (another copy of the code) when given."""
     port = free_port()
     with tempfile.TemporaryDirectory(prefix="safegate-perf-") as tmp:
         env = {
@@ -32,9 +34,12 @@ def running_server(extra_env: dict[str, str] | None = None) -> Iterator[str]:
             "SAFEGATE_DATABASE_URL": f"sqlite:///{Path(tmp) / 'perf.db'}",
             **(extra_env or {}),
         }
+        if checkout is not None:
+            env["PYTHONPATH"] = str(checkout)
         process = subprocess.Popen(
             [sys.executable, "-m", "app.cli", "serve", "--port", str(port)],
             env=env,
+            cwd=checkout,
             stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL,
         )

@@ -147,7 +147,7 @@ def main() -> None:
         def one(i: int) -> None:
             action = {"action": "PickupObject" if i % 2 == 0 else "PutObject",
                       "object": "cup_3", **({} if i % 2 == 0 else {"target": "counter_1"})}
-            seq = len(monitor.counters.actions_by_name) and monitor.counters.actions_checked + 1
+            seq = monitor.counters.actions_checked  # 0, 1, 2...: each follows the last
             for kind in ("before", "after"):
                 message: dict[str, Any] = {"type": kind, "seq": seq, "action": action}
                 if delta:

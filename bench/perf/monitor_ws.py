@@ -117,11 +117,11 @@ async def concurrent_run(base: str, contract_id: str) -> tuple[Tally, float, int
 
 async def sequential_run(base: str, contract_id: str) -> Tally:
     async with httpx.AsyncClient(base_url=base, timeout=30) as http:
-        session_id = (await http.post("/monitor", json={"contract_id": contract_id})).json()[
-            "session_id"]
+        warm_up, session_id = [(await http.post("/monitor", json={"contract_id": contract_id})
+                                ).json()["session_id"] for _ in range(2)]
     tally = Tally()
     ws_base = base.replace("http://", "ws://")
-    await run_session(ws_base, session_id, 1, 100, Tally())  # warm-up on its own session
+    await run_session(ws_base, warm_up, 1, 100, Tally())  # warm-up on its own session
     await run_session(ws_base, session_id, 1000, SEQUENTIAL_ACTIONS, tally)
     return tally
 

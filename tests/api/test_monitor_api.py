@@ -6,6 +6,7 @@ The restart test and the real-websocket tests live in `tests/client/` (they run 
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -17,12 +18,16 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from monitor_kit import (
     GO_TO_MUG,
     PICK_MUG,
+    REQUEST,
     TOGGLE_STOVE,
     after,
     before,
     store_contract,
 )
 
+from app.config import Settings
+from app.domain.errors import Unavailable
+from app.main import create_app
 from app.store.repository import Repository
 
 
@@ -110,7 +115,7 @@ class TestMonitorSocket:
             socket.send_json({"type": "launch", "seq": 3})
             assert socket.receive_json() == {
                 "type": "error", "seq": 3, "halted": False,
-                "detail": "unknown message type 'launch': expected 'before' or 'after'"}
+                "detail": "unknown message type 'launch': expected 'before', 'after' or 'sync'"}
             socket.send_json(before(4, GO_TO_MUG))
             assert socket.receive_json()["type"] == "allow"
 
@@ -163,6 +168,132 @@ class TestEventsSocket:
             status = listener.receive_json()
         assert status["halted"] is True
         assert status["violation"]["condition_id"] == "skill.toggle"
+
+
+def exchange(socket: Any, message: dict[str, Any]) -> dict[str, Any]:
+    socket.send_json(message)
+    answer: dict[str, Any] = socket.receive_json()
+    return answer
+
+
+def logged(client: TestClient, session_id: str) -> list[tuple[Any, str]]:
+    """The (seq, answer) pairs in a session's stored log."""
+    return [(entry["in"].get("seq"), entry["out"])
+            for event in repository_of(client).list_monitor_events(session_id)
+            for entry in event.payload["messages"]]
+
+
+def sync(seq: int, holding: str | None = None, room: str = "kitchen") -> dict[str, Any]:
+    """A runtime's resync: its whole current state after action `seq`."""
+    robot = {**REQUEST["robot"], "room": room, "holding": holding}
+    return {"type": "sync", "seq": seq, "state": {"scene": REQUEST["scene"], "robot": robot}}
+
+
+def failing_writes(monkeypatch: pytest.MonkeyPatch, repository: Repository) -> None:
+    def unavailable(*_: Any, **__: Any) -> None:
+        raise Unavailable("database error while writing monitor steps: OperationalError",
+                          dependency="database")
+
+    monkeypatch.setattr(repository, "write_monitor_logs", unavailable)
+
+
+class TestDurableSteps:
+    """Issue 18, item 2: an answer is sent only once the step it answers is stored."""
+
+    def test_an_allowed_step_is_stored_before_it_is_answered(
+            self, client_on: TestClient) -> None:
+        session_id = open_session(client_on)
+        with client_on.websocket_connect(f"/monitor/{session_id}") as socket:
+            assert exchange(socket, before(1, PICK_MUG))["type"] == "allow"
+            assert logged(client_on, session_id) == [(1, "allow")]
+            assert exchange(socket, after(1, PICK_MUG))["type"] == "allow"
+            assert logged(client_on, session_id) == [(1, "allow"), (1, "allow")]
+            socket.send_text("junk")  # refusals change nothing: they wait for no write
+            assert socket.receive_json()["type"] == "error"
+        deadline = time.monotonic() + 10  # written when the runtime disconnects
+        while logged(client_on, session_id)[-1] != (None, "error") and time.monotonic() < deadline:
+            time.sleep(0.02)
+        assert logged(client_on, session_id)[-1] == (None, "error")
+
+    def test_a_step_that_cannot_be_stored_is_not_allowed_and_the_session_goes_on_from_the_store(
+            self, client: TestClient, monkeypatch: pytest.MonkeyPatch) -> None:
+        session_id = open_session(client)
+        with client.websocket_connect(f"/monitor/{session_id}") as socket:
+            assert exchange(socket, before(1, PICK_MUG))["type"] == "allow"
+            with monkeypatch.context() as patch:
+                failing_writes(patch, repository_of(client))
+                refused = exchange(socket, after(1, PICK_MUG))
+            assert (refused["type"], refused["seq"], refused["halted"]) == ("error", 1, False)
+            assert "could not be stored" in refused["detail"]
+            summary = client.get(f"/monitor/{session_id}/summary").json()
+            assert (summary["last_seq"], summary["pending_seq"]) == (None, 1)
+            assert exchange(socket, after(1, PICK_MUG)) == {"type": "allow", "seq": 1}
+            assert exchange(socket, before(2, GO_TO_MUG)) == {"type": "allow", "seq": 2}
+        assert logged(client, session_id) == [(1, "allow"), (1, "allow"), (2, "allow")]
+
+    def test_a_halt_that_cannot_be_stored_is_still_answered_and_stored_later(
+            self, client: TestClient, monkeypatch: pytest.MonkeyPatch) -> None:
+        session_id = open_session(client)
+        with client.websocket_connect(f"/monitor/{session_id}") as socket, \
+                monkeypatch.context() as patch:
+            failing_writes(patch, repository_of(client))
+            answer = exchange(socket, before(1, TOGGLE_STOVE))
+            assert answer["type"] == "violation"  # halting is the safe side
+            assert exchange(socket, before(2, GO_TO_MUG))["type"] == "halted"
+            assert not repository_of(client).get_monitor_session(session_id).halted
+        deadline = time.monotonic() + 10  # retried when the runtime disconnects
+        while (not repository_of(client).get_monitor_session(session_id).halted
+               and time.monotonic() < deadline):
+            time.sleep(0.02)
+        stored = repository_of(client).get_monitor_session(session_id)
+        assert stored.halted and stored.halt_violation is not None
+
+    def test_a_runtime_out_of_step_is_asked_to_resync_and_goes_on_after_its_sync(
+            self, client: TestClient) -> None:
+        session_id = open_session(client)
+        with client.websocket_connect(f"/monitor/{session_id}") as socket:
+            for message in (before(1, GO_TO_MUG), after(1, GO_TO_MUG)):
+                assert exchange(socket, message)["type"] == "allow"
+            out_of_step = exchange(socket, before(3, GO_TO_MUG))  # 2 ran unmonitored
+            assert out_of_step["type"] == "error" and out_of_step["halted"] is False
+            assert out_of_step["resync"] == {"last_seq": 1, "pending_seq": None}
+            assert exchange(socket, sync(2, holding="mug_1")) == {"type": "allow", "seq": 2}
+        with client.websocket_connect(f"/monitor/{session_id}") as socket:  # the sync is stored
+            assert exchange(socket, before(3, GO_TO_MUG)) == {"type": "allow", "seq": 3}
+        summary = client.get(f"/monitor/{session_id}/summary").json()
+        assert (summary["last_seq"], summary["pending_seq"]) == (2, 3)
+
+    def test_another_writer_makes_this_process_reload_rather_than_answer_from_memory(
+            self, client: TestClient, sqlite_url: str) -> None:
+        """Two processes on one session: the stale one's next write fails, so it reloads."""
+        session_id = open_session(client)
+        with client.websocket_connect(f"/monitor/{session_id}") as stale:
+            assert exchange(stale, before(1, PICK_MUG))["type"] == "allow"
+            with TestClient(create_app(Settings(database_url=sqlite_url))) as other, \
+                    other.websocket_connect(f"/monitor/{session_id}") as socket:
+                for message in (after(1, PICK_MUG), before(2, GO_TO_MUG), after(2, GO_TO_MUG)):
+                    assert exchange(socket, message)["type"] == "allow"
+            refused = exchange(stale, after(1, PICK_MUG))  # stale memory would allow it
+            assert refused["type"] == "error" and "could not be stored" in refused["detail"]
+            assert exchange(stale, after(1, PICK_MUG))["resync"] == {
+                "last_seq": 2, "pending_seq": None}  # reloaded: 1 and 2 are done
+            assert exchange(stale, before(3, GO_TO_MUG)) == {"type": "allow", "seq": 3}
+
+    def test_a_log_that_does_not_replay_to_its_answers_asks_the_runtime_to_resync(
+            self, client: TestClient) -> None:
+        """A log written before seqs had to follow each other (5 came after 1) is not trusted
+        to rebuild the state: the runtime is asked for it."""
+        session_id = open_session(client)
+        repository_of(client).append_monitor_event(session_id, "messages", {"messages": [
+            {"in": before(1, GO_TO_MUG), "out": "allow"},
+            {"in": after(1, GO_TO_MUG), "out": "allow"},
+            {"in": before(5, PICK_MUG), "out": "allow"}]})
+        with client.websocket_connect(f"/monitor/{session_id}") as socket:
+            refused = exchange(socket, after(5, PICK_MUG))
+            assert refused["type"] == "error" and "resync" in refused
+            assert "could not be rebuilt" in refused["detail"]
+            assert exchange(socket, sync(5, holding="mug_1"))["type"] == "allow"
+            assert exchange(socket, before(6, GO_TO_MUG))["type"] == "allow"
 
 
 class TestSummary:

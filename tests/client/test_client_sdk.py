@@ -29,6 +29,7 @@ from app.client import (
     MonitorError,
     MonitorEvents,
     MonitorHalted,
+    MonitorResync,
 )
 from app.store.repository import Repository
 
@@ -117,6 +118,23 @@ class TestMonitorClient:
         with MonitorClient(server.base_url, session_id) as monitor, \
                 pytest.raises(MonitorError, match="unknown action"):
             monitor.before({"action": "Teleport", "object": "mug_1"})
+
+    def test_a_runtime_out_of_step_resyncs_and_goes_on(
+            self, server: Any, server_repository: Repository) -> None:
+        session_id = open_session(server, server_repository)
+        with MonitorClient(server.base_url, session_id) as monitor:
+            monitor.step(GO_TO_MUG)
+        # The runtime picked the mug up unmonitored (seq 2) and reconnects numbering from 3.
+        with MonitorClient(server.base_url, session_id, first_seq=3) as monitor:
+            with pytest.raises(MonitorResync) as resync:
+                monitor.before(GO_TO_MUG)
+            assert (resync.value.last_seq, resync.value.pending_seq) == (1, None)
+            monitor.sync({"scene": REQUEST["scene"],
+                          "robot": {**REQUEST["robot"], "holding": "mug_1"}}, seq=2)
+            assert monitor.before(GO_TO_MUG) == 3
+        with GateClient(server.base_url) as gate:
+            summary = gate.monitor_summary(session_id)
+        assert (summary["last_seq"], summary["pending_seq"]) == (2, 3)
 
     def test_listeners_see_the_violation(self, server: Any,
                                          server_repository: Repository) -> None:

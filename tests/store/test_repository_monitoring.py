@@ -7,10 +7,10 @@ from concurrent.futures import ThreadPoolExecutor
 import pytest
 from sqlalchemy import Engine
 
-from app.domain.errors import NotFound
+from app.domain.errors import NotFound, Unavailable
 from app.domain.models import InitialState
 from app.store.records import ContractRecord, MonitorSessionRecord
-from app.store.repository import Repository
+from app.store.repository import MonitorLogWrite, Repository
 
 INITIAL_STATE = InitialState.model_validate(
     {
@@ -133,3 +133,57 @@ class TestMonitorEvents:
     def test_an_event_for_an_unknown_session_is_not_found(self, repository: Repository) -> None:
         with pytest.raises(NotFound):
             repository.append_monitor_event("0" * 32, "allow", {})
+
+
+class TestGroupCommit:
+    """`write_monitor_logs`: the monitor's group commit, numbered by its caller."""
+
+    @pytest.fixture
+    def two_sessions(self, repository: Repository,
+                     saved_contract: ContractRecord) -> list[str]:
+        assert saved_contract.id is not None
+        ids = [repository.create_monitor_session(MonitorSessionRecord(
+            contract_id=saved_contract.id, initial_state=INITIAL_STATE)).id for _ in range(2)]
+        return [i for i in ids if i is not None]
+
+    def test_several_sessions_steps_halt_and_counters_land_in_one_write(
+        self, repository: Repository, two_sessions: list[str]
+    ) -> None:
+        first, second = two_sessions
+        violation = {"condition_id": "skill.toggle", "kind": "guard"}
+        repository.write_monitor_logs([
+            MonitorLogWrite(first, 1, [{"in": {"seq": 1}, "out": "allow"}]),
+            MonitorLogWrite(second, 1, [{"in": {"seq": 1}, "out": "violation"}],
+                            counters={"messages": 1}, halt_violation=violation),
+        ])
+        assert [e.payload["messages"] for e in repository.list_monitor_events(first)] == [
+            [{"in": {"seq": 1}, "out": "allow"}]]
+        halted = repository.get_monitor_session(second)
+        assert (halted.halted, halted.halt_violation, halted.counters) == (
+            True, violation, {"messages": 1})
+        assert repository.last_monitor_event_seq(first) == 1
+        assert repository.last_monitor_event_seq(two_sessions[0] + "x") == 0
+
+    def test_an_event_number_already_taken_fails_the_whole_write(
+        self, repository: Repository, two_sessions: list[str]
+    ) -> None:
+        first, second = two_sessions
+        repository.write_monitor_logs([MonitorLogWrite(first, 1, [{"in": {}, "out": "allow"}])])
+        with pytest.raises(Unavailable):
+            repository.write_monitor_logs([
+                MonitorLogWrite(second, 1, [{"in": {}, "out": "allow"}]),
+                MonitorLogWrite(first, 1, [{"in": {}, "out": "allow"}]),  # another writer's
+            ])
+        assert repository.list_monitor_events(second) == []
+        assert len(repository.list_monitor_events(first)) == 1
+
+    def test_the_first_halt_is_kept(
+        self, repository: Repository, two_sessions: list[str]
+    ) -> None:
+        first = two_sessions[0]
+        for n, condition in enumerate(("a", "b"), start=1):
+            repository.write_monitor_logs([MonitorLogWrite(
+                first, n, [], halt_violation={"condition_id": condition})])
+        stored = repository.get_monitor_session(first)
+        assert stored.halt_violation == {"condition_id": "a"}
+        assert repository.list_monitor_events(first) == []

@@ -1,8 +1,9 @@
 """Stage 6, Runtime Monitoring: a contract enforced action by action, halting on a violation.
 
 In: a `Contract` (compiled once into a `CompiledContract`), the initial `WorldState`, then the
-runtime's `before`/`after` messages. Out: one `Verdict` per message (allow, violation, error,
-halted), the `MonitorViolation` that halted the session, and the `MonitorSummary`.
+runtime's `before`/`after` messages (and `sync`, its state after a request to resynchronise).
+Out: one `Verdict` per message (allow, violation, error, halted), the `MonitorViolation` that
+halted the session, and the `MonitorSummary`.
 Fails: `CompiledContract` raises `FormulaError` for a contract that cannot be monitored;
 `Monitor.step` never raises (a bad message is an `error` verdict, never an allow).
 """

@@ -2,11 +2,14 @@
 
 In: one websocket message from a robot runtime, as text, bytes or an already decoded object
 (`{"type": "before" | "after", "seq": 7, "action": {...}, "state": {...}}`, see
-`shared/spec/plans-and-monitoring.md`). Out: a `MonitorMessage` (`parse_message`), and the
-answers: `Verdict` (allow, violation, error, halted) with `to_wire()`, and `MonitorViolation`.
+`shared/spec/plans-and-monitoring.md`; and `{"type": "sync", "seq": 7, "state": {...}}`, the
+runtime's answer to a request to resynchronise, see the README's monitor protocol). Out: a
+`MonitorMessage` (`parse_message`), and the answers: `Verdict` (allow, violation, error, halted)
+with `to_wire()`, and `MonitorViolation`.
 Fails: `parse_message` raises `InvalidInput` for anything that is not a well-formed message (not
 JSON, not an object, an unknown type, a missing or non-integer seq, a state that does not fit
-the initial-state shape); the monitor turns that into an `error` verdict.
+the initial-state shape, a `sync` without its scene and robot); the monitor turns that into an
+`error` verdict.
 """
 
 from __future__ import annotations
@@ -22,9 +25,9 @@ from pydantic import ValidationError
 from app.domain.errors import InvalidInput
 from app.domain.models import InitialState
 
-MessageType = Literal["before", "after"]
+MessageType = Literal["before", "after", "sync"]
 VerdictType = Literal["allow", "violation", "error", "halted"]
-_MESSAGE_TYPES: frozenset[str] = frozenset({"before", "after"})
+_MESSAGE_TYPES: dict[str, MessageType] = {"before": "before", "after": "after", "sync": "sync"}
 MAX_MESSAGE_CHARS = 1_000_000
 
 
@@ -83,9 +86,10 @@ def parse_message(decoded: object) -> MonitorMessage:
     if not isinstance(decoded, Mapping):
         raise InvalidInput("a message must be a JSON object")
     kind = decoded.get("type")
-    if kind not in _MESSAGE_TYPES:
-        raise InvalidInput(f"unknown message type {kind!r}: expected 'before' or 'after'",
-                           field="type")
+    message_type = _MESSAGE_TYPES.get(kind) if isinstance(kind, str) else None
+    if message_type is None:
+        raise InvalidInput(f"unknown message type {kind!r}: expected 'before', 'after' or "
+                           f"'sync'", field="type")
     seq = seq_of(decoded)
     if seq is None or seq < 0:
         raise InvalidInput("'seq' must be a non-negative integer", field="seq")
@@ -105,7 +109,13 @@ def parse_message(decoded: object) -> MonitorMessage:
             raise InvalidInput(f"'state' does not fit the scene/robot shape at {where or 'state'}:"
                                f" {first.get('msg', 'invalid')}", field=f"state.{where}"
                                ) from error
-    return MonitorMessage("before" if kind == "before" else "after", seq, action, state)
+    if message_type == "sync" and (state is None or state.scene is None or state.robot is None):
+        raise InvalidInput("a 'sync' message must carry the runtime's current state: both "
+                           "'state.scene' and 'state.robot'", field="state")
+    return MonitorMessage(message_type, seq, action, state)
+
+
+_PHASES: dict[str, MessageType] = {"after": "after", "sync": "sync"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -147,7 +157,7 @@ class MonitorViolation:
             action=dict(wire.get("action") or {}), kind=str(wire["kind"]),
             condition_id=str(wire["condition_id"]), formula=str(wire.get("formula", "")),
             description=str(wire.get("description", "")), seq=int(wire.get("seq", 0)),
-            phase="after" if wire.get("phase") == "after" else "before",
+            phase=_PHASES.get(str(wire.get("phase")), "before"),
             established=bool(wire.get("established", True)),
             unknown_facts=tuple(str(f) for f in wire.get("unknown_facts", ())),
             quote=None if wire.get("quote") is None else str(wire["quote"]),

@@ -16,12 +16,21 @@ value of it would break, so a runtime state where the invariant is unknown is on
 never promised; the violation names the unknown facts, so the runtime knows what to report.
 
 The first violation halts the session, absorbingly: the monitor has no reset, and every later
-message is answered `halted`. A malformed or out-of-order message is answered `error` (not
-allowed, not halted) and changes nothing. `step` never raises.
+message is answered `halted`. A malformed message is answered `error` (not allowed, not halted)
+and changes nothing. `step` never raises.
+
+Steps follow each other: after the first action, a `before` must carry the seq after the last
+finished action, an `after` the seq of the running one. A message that does not follow is never
+checked against a state the runtime may have moved past: it gets an `error` carrying `resync`
+(the monitor's `last_seq` and `pending_seq`), and the runtime either goes on from there or sends
+`sync`, its current state after its last finished action; the monitor checks the aborts and the
+invariants in that state and goes on from it (allow), or halts. A monitor restored from a log it
+could not reproduce is put in the same position (`require_sync`).
 """
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from datetime import UTC, datetime
@@ -45,6 +54,10 @@ from app.domain.world import Action, WorldState, apply_snapshot, parse_action, s
 Clock = Callable[[], datetime]
 
 
+class OutOfStep(InvalidInput):
+    """A message that does not follow the monitor's last step: the runtime must resynchronise."""
+
+
 def utc_clock() -> datetime:
     """The current time in UTC (the default clock of violations)."""
     return datetime.now(UTC)
@@ -62,8 +75,8 @@ class _Pending:
 class Monitor:
     """The runtime monitor of one session."""
 
-    __slots__ = ("_aborts_clear", "_aside", "_clock", "_last_seq", "_pending", "_violation",
-                 "contract", "counters", "state")
+    __slots__ = ("_aborts_clear", "_aside", "_clock", "_last_seq", "_pending", "_sync_reason",
+                 "_violation", "contract", "counters", "state")
 
     def __init__(
         self,
@@ -94,6 +107,7 @@ class Monitor:
         # that brings no observation need not evaluate them again.
         self._aborts_clear: WorldState | None = None
         self._aside = None if contract.scope is None else AsideTracker(contract.scope)
+        self._sync_reason: str | None = None
 
     @property
     def halted(self) -> bool:
@@ -114,6 +128,19 @@ class Monitor:
     def last_seq(self) -> int | None:
         """The seq of the last action whose `after` was accepted, if any."""
         return None if self._last_seq < 0 else self._last_seq
+
+    @property
+    def sync_required(self) -> bool:
+        """Whether only a `sync` is accepted until the runtime has sent its current state."""
+        return self._sync_reason is not None
+
+    def require_sync(self, reason: str) -> None:
+        """Accept nothing but a `sync` from now on (e.g. the state could not be rebuilt)."""
+        self._sync_reason = reason
+
+    def resync(self) -> dict[str, Any]:
+        """Where the monitor stands, for a runtime asked to resynchronise."""
+        return {"last_seq": self.last_seq, "pending_seq": self.pending_seq}
 
     def summary(self) -> MonitorSummary:
         """The paper's MonitorSummary of this session so far."""
@@ -142,9 +169,20 @@ class Monitor:
                            detail="the session is halted; no action is allowed")
         try:
             parsed = parse_message(decoded)
+            if parsed.type == "sync":
+                return self._sync(parsed)
+            if self._sync_reason is not None:
+                raise OutOfStep(f"{self._sync_reason}: send 'sync' with the current state")
             if parsed.type == "before":
                 return self._before(parsed)
             return self._after(parsed)
+        except OutOfStep as error:
+            self.counters.errors += 1
+            detail = error.detail if self._sync_reason is not None else (
+                f"{error.detail}: resynchronise (go on from 'resync', or send 'sync' with the "
+                f"current state)")
+            return Verdict("error", seq_of(decoded), detail=detail,
+                           extra={"resync": self.resync()})
         except InvalidInput as error:
             return self._refuse(seq_of(decoded), error.detail)
         except Exception as error:  # a monitor must answer, never crash
@@ -164,11 +202,11 @@ class Monitor:
         seq = message.seq
         pending = self._pending
         if pending is not None and pending.seq != seq:
-            raise InvalidInput(f"action seq {pending.seq} is still running: send its 'after' "
-                               f"before the next 'before'", field="seq")
-        if pending is None and seq <= self._last_seq:
-            raise InvalidInput(f"seq {seq} is not after the last one ({self._last_seq})",
-                               field="seq")
+            raise OutOfStep(f"seq {seq} does not follow: action {pending.seq} is still running "
+                            f"(its 'after' was not received)", field="seq")
+        if pending is None and self._last_seq >= 0 and seq != self._last_seq + 1:
+            raise OutOfStep(f"seq {seq} does not follow the last finished action "
+                            f"({self._last_seq})", field="seq")
         state = self._observe(self.state, message)
         assert message.action is not None  # parse_message requires it for `before`
         action = parse_action(message.action, step=seq, state=state)
@@ -186,7 +224,7 @@ class Monitor:
         by_action[action.name] = by_action.get(action.name, 0) + 1
         self.state = state
         if failure is not None:
-            return self._halt(failure, action, seq, "before")
+            return self._halt(failure, action.to_wire(), seq, "before")
         departure = self._departure(action, state, seq)
         if departure is not None:
             return self._halt_scope(departure, action, seq)
@@ -197,8 +235,8 @@ class Monitor:
         seq, pending = message.seq, self._pending
         if pending is None or pending.seq != seq:
             expected = "no action is running" if pending is None else f"expected {pending.seq}"
-            raise InvalidInput(f"'after' for seq {seq} matches no allowed action ({expected})",
-                               field="seq")
+            raise OutOfStep(f"'after' for seq {seq} matches no allowed action ({expected})",
+                            field="seq")
         action = pending.action
         if message.action is not None and message.action != pending.wire:
             reported = parse_action(message.action, step=seq, state=self.state)
@@ -221,7 +259,7 @@ class Monitor:
         counters.invariants_checked += len(invariants)
         self.state, self._pending, self._last_seq = state, None, seq
         if failure is not None:
-            return self._halt(failure, action, seq, "after")
+            return self._halt(failure, action.to_wire(), seq, "after")
         return Verdict("allow", seq)
 
     def _departure(self, action: Action, state: WorldState, seq: int) -> Departure | None:
@@ -238,10 +276,39 @@ class Monitor:
         self._pending = None
         return Verdict("violation", seq, self._violation, halted=True)
 
-    def _halt(self, failure: Failure, action: Action, seq: int, phase: MessageType) -> Verdict:
+    def _sync(self, message: MonitorMessage) -> Verdict:
+        """The runtime's state after its last finished action `seq`: checked, then the state
+        the session goes on from. An action still running here is finished if `seq` reaches
+        it (its effects predicted, then corrected by the state), abandoned otherwise."""
+        seq, pending = message.seq, self._pending
+        if seq < self._last_seq:
+            raise OutOfStep(f"'sync' for seq {seq} goes back before the last finished action "
+                            f"({self._last_seq})", field="seq")
+        state, action = self.state, None
+        if pending is not None and seq >= pending.seq:
+            action = pending.action
+            with contextlib.suppress(PlanError):  # else the observation alone tells
+                state = step(state, action)
+        state = self._observe(state, message)
+        aborts, invariants = self.contract.aborts, self.contract.invariants
+        failure = first_failure(aborts, state, None, must_be=False)
+        self._aborts_clear = state if failure is None else None
+        failure = failure or first_failure(invariants, state, None, must_be=True)
+        counters = self.counters
+        counters.states_checked += 1
+        counters.aborts_checked += len(aborts)
+        counters.invariants_checked += len(invariants)
+        self.state, self._pending, self._last_seq = state, None, seq
+        self._sync_reason = None
+        if failure is not None:
+            return self._halt(failure, {} if action is None else action.to_wire(), seq, "sync")
+        return Verdict("allow", seq)
+
+    def _halt(self, failure: Failure, action: Mapping[str, Any], seq: int,
+              phase: MessageType) -> Verdict:
         condition = failure.compiled.condition
         self._violation = MonitorViolation(
-            timestamp=self._clock(), action=action.to_wire(), kind=failure.compiled.kind,
+            timestamp=self._clock(), action=action, kind=failure.compiled.kind,
             condition_id=condition.id, formula=condition.formula,
             description=_describe(failure), seq=seq, phase=phase,
             established=failure.established, unknown_facts=failure.unknown_facts,
@@ -262,7 +329,10 @@ def _describe(failure: Failure) -> str:
     return f"could not be established: {text} (the state does not determine {missing})."
 
 
-def replay(monitor: Monitor, messages: Iterable[Mapping[str, Any]]) -> None:
-    """Feed a session's accepted messages again (to rebuild its state after a restart)."""
-    for message in messages:
-        monitor.step(message)
+def replay(monitor: Monitor, messages: Iterable[Mapping[str, Any]]) -> list[Verdict]:
+    """Feed a session's logged messages again (to rebuild its state after a restart).
+
+    Returns:
+        The verdicts, one per message, to compare with the answers that were given.
+    """
+    return [monitor.step(message) for message in messages]

@@ -10,7 +10,7 @@ read a broken database as "no hazard template", "no key" or "attempts left".
 from app.store.repository.access import AccessQueries, hash_api_key
 from app.store.repository.audit import AuditQueries
 from app.store.repository.contracts import ContractQueries
-from app.store.repository.monitoring import MonitorQueries
+from app.store.repository.monitoring import MonitorLogWrite, MonitorQueries
 from app.store.repository.template_documents import template_content_hash
 from app.store.repository.template_imports import TemplateImportQueries
 
@@ -21,4 +21,4 @@ class Repository(
     """All of SafeGate's persistence: templates, audit trail, contracts, monitoring, keys, cache."""
 
 
-__all__ = ["Repository", "hash_api_key", "template_content_hash"]
+__all__ = ["MonitorLogWrite", "Repository", "hash_api_key", "template_content_hash"]

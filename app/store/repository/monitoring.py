@@ -3,15 +3,19 @@
 In: `MonitorSessionRecord` values, counters, violations and event payloads (JSON objects).
 Out: the stored records. Halting is absorbing: the first halt violation is kept, a later one is
 ignored, and nothing sets `halted` back to false. Event numbers are assigned here, 1, 2, 3... per
-session, with a retry when two writers race for the same number.
+session, with a retry when two writers race for the same number; except in `write_monitor_logs`,
+the monitor's group commit, whose caller numbers the events itself (a number another writer took
+fails the whole write, which the caller treats as a lost race and reloads).
 Fails: `NotFound` for unknown ids, `Unavailable` for database errors.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
-from sqlalchemy import func, select, update
+from sqlalchemy import func, insert, select, update
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session
 
@@ -22,6 +26,18 @@ from app.store.repository._base import RepositoryBase
 from app.store.tables import ContractRow, MonitorEventRow, MonitorSessionRow, new_id, utc_now
 
 APPEND_RETRIES = 5
+
+
+@dataclass(frozen=True, slots=True)
+class MonitorLogWrite:
+    """What one session adds in one group commit: a `messages` event numbered `event_seq`
+    holding `entries` (none when `entries` is empty), its counters, and its halt."""
+
+    session_id: str
+    event_seq: int
+    entries: list[dict[str, Any]]
+    counters: dict[str, Any] | None = None
+    halt_violation: dict[str, Any] | None = None
 
 
 def _to_session(row: MonitorSessionRow) -> MonitorSessionRecord:
@@ -184,3 +200,39 @@ class MonitorQueries(RepositoryBase):
             query = query.limit(limit)
         with self._transaction("listing monitor events") as session:
             return [_to_event(row) for row in session.scalars(query).all()]
+
+    def write_monitor_logs(self, writes: Sequence[MonitorLogWrite]) -> None:
+        """Write several sessions' steps in one transaction (the monitor's group commit).
+
+        Each write appends its entries as one `messages` event numbered `event_seq`, replaces the
+        session's counters when given, and halts it when a violation is given (the first halt
+        is kept, as in `update_monitor_session`). All or nothing.
+
+        Raises:
+            Unavailable: database error, including an event number already taken (another
+                writer appended to the session) or an unknown session.
+        """
+        now = utc_now()
+        rows = [{"session_id": w.session_id, "seq": w.event_seq, "type": "messages",
+                 "payload": {"messages": w.entries}, "created_at": now}
+                for w in writes if w.entries]
+        with self._core_transaction("writing monitor steps") as connection:
+            if rows:
+                connection.execute(insert(MonitorEventRow), rows)
+            for w in writes:
+                if w.counters is not None:
+                    connection.execute(
+                        update(MonitorSessionRow).where(MonitorSessionRow.id == w.session_id)
+                        .values(counters=w.counters, updated_at=now))
+                if w.halt_violation is not None:
+                    connection.execute(
+                        update(MonitorSessionRow).where(MonitorSessionRow.id == w.session_id)
+                        .where(MonitorSessionRow.halted.is_(False))
+                        .values(halted=True, halt_violation=w.halt_violation, updated_at=now))
+
+    def last_monitor_event_seq(self, session_id: str) -> int:
+        """The number of a session's last event (0 when it has none)."""
+        query = select(func.max(MonitorEventRow.seq)).where(
+            MonitorEventRow.session_id == session_id)
+        with self._core_transaction("reading a monitor session's last event") as connection:
+            return int(connection.scalar(query) or 0)

@@ -176,11 +176,111 @@ class TestMalformedMessages:
     def test_a_seq_that_does_not_increase_is_an_error(self, monitor: Monitor) -> None:
         answers = run(monitor, before(5, GO_TO_MUG), after(5, GO_TO_MUG), before(5, GO_TO_MUG))
         assert [a["type"] for a in answers] == ["allow", "allow", "error"]
+        assert answers[2]["resync"] == {"last_seq": 5, "pending_seq": None}
 
     def test_a_resent_before_for_the_running_action_is_checked_again(
             self, monitor: Monitor) -> None:
         answers = run(monitor, before(1, GO_TO_MUG), before(1, GO_TO_MUG))
         assert [a["type"] for a in answers] == ["allow", "allow"]
+
+
+class TestResynchronising:
+    """A message that does not follow the last step is never checked against a state the
+    runtime may have moved past: it is asked to resynchronise."""
+
+    @pytest.mark.parametrize("messages", [
+        [before(1, GO_TO_MUG), after(1, GO_TO_MUG), before(3, PICK_MUG)],  # 2 never seen
+        [before(1, GO_TO_MUG), after(1, GO_TO_MUG), after(1, GO_TO_MUG)],  # a repeated after
+        [before(1, GO_TO_MUG), before(2, PICK_MUG)],  # 1 still running
+        [before(1, GO_TO_MUG), after(2, GO_TO_MUG)],
+    ])
+    def test_a_step_that_does_not_follow_gets_an_error_asking_to_resync(
+            self, monitor: Monitor, messages: list[dict[str, Any]]) -> None:
+        *accepted, out_of_step = run(monitor, *messages)
+        assert all(a["type"] == "allow" for a in accepted)
+        assert out_of_step["type"] == "error" and out_of_step["halted"] is False
+        assert out_of_step["resync"] == {"last_seq": monitor.last_seq,
+                                         "pending_seq": monitor.pending_seq}
+        assert "does not follow" in out_of_step["detail"] or "matches no" in out_of_step[
+            "detail"]
+
+    def test_the_first_action_may_have_any_seq_and_the_next_must_follow_it(
+            self, monitor: Monitor) -> None:
+        answers = run(monitor, before(41, GO_TO_MUG), after(41, GO_TO_MUG),
+                      before(42, PICK_MUG), after(42, PICK_MUG), before(44, GO_TO_MUG))
+        assert [a["type"] for a in answers] == ["allow"] * 4 + ["error"]
+
+    def test_sync_goes_on_from_the_runtimes_state(self, monitor: Monitor) -> None:
+        """The runtime did seq 2 (picking the mug up) unmonitored; it reports where it is."""
+        holding_mug = {"scene": {"objects": []},
+                       "robot": {"room": "living_room", "holding": "mug_1"}}
+        answers = run(monitor, before(1, GO_TO_MUG), after(1, GO_TO_MUG),
+                      before(3, HAND_KNIFE),
+                      {"type": "sync", "seq": 2, "state": holding_mug},
+                      before(3, GO_TO_MUG))
+        assert [a["type"] for a in answers] == ["allow", "allow", "error", "allow", "allow"]
+        assert answers[3] == {"type": "allow", "seq": 2}
+        assert monitor.state.robot.holding == "mug_1"
+        assert monitor.state.robot.room == "living_room"
+        assert (monitor.last_seq, monitor.pending_seq) == (2, 3)
+
+    def test_a_sync_whose_state_breaks_an_invariant_halts(self, monitor: Monitor) -> None:
+        overloaded = {"scene": {"objects": [{"id": "mug_1", "type": "Mug", "room": "kitchen",
+                                             "properties": {"mass_kg": 5.0}}]},
+                      "robot": {"room": "kitchen", "holding": "mug_1"}}
+        answer = monitor.step({"type": "sync", "seq": 4, "state": overloaded}).to_wire()
+        assert answer["type"] == "violation" and answer["halted"] is True
+        assert answer["violation"]["condition_id"] == "payload.within_limit"
+        assert answer["violation"]["phase"] == "sync"
+        assert MonitorViolation.from_wire(answer["violation"]).phase == "sync"
+
+    def test_a_sync_finishes_the_running_action_it_reaches(self, monitor: Monitor) -> None:
+        here = {"scene": {"objects": []}, "robot": {"room": "kitchen"}}
+        run(monitor, before(1, PICK_MUG), {"type": "sync", "seq": 1, "state": here})
+        assert monitor.state.robot.holding == "mug_1"  # the pick's predicted effect
+        assert (monitor.last_seq, monitor.pending_seq) == (1, None)
+
+    def test_a_sync_before_the_running_action_abandons_it(self, monitor: Monitor) -> None:
+        here = {"scene": {"objects": []}, "robot": {"room": "kitchen"}}
+        answers = run(monitor, before(1, GO_TO_MUG), after(1, GO_TO_MUG), before(2, PICK_MUG),
+                      {"type": "sync", "seq": 1, "state": here})
+        assert [a["type"] for a in answers] == ["allow"] * 4
+        assert monitor.state.robot.holding is None  # the pick never ran
+        assert (monitor.last_seq, monitor.pending_seq) == (1, None)
+        assert monitor.step(before(2, PICK_MUG)).type == "allow"
+
+    @pytest.mark.parametrize("message", [
+        {"type": "sync", "seq": 3},
+        {"type": "sync", "seq": 3, "state": {"robot": {"room": "kitchen"}}},
+        {"type": "sync", "seq": 3, "state": {"scene": {"objects": []}}},
+    ])
+    def test_a_sync_without_the_whole_state_is_an_error(
+            self, monitor: Monitor, message: dict[str, Any]) -> None:
+        answer = monitor.step(message).to_wire()
+        assert answer["type"] == "error" and "state" in answer["detail"]
+        assert monitor.last_seq is None
+
+    def test_a_sync_cannot_go_back_before_the_last_finished_action(
+            self, monitor: Monitor) -> None:
+        here = {"scene": {"objects": []}, "robot": {"room": "kitchen"}}
+        answers = run(monitor, before(5, GO_TO_MUG), after(5, GO_TO_MUG),
+                      {"type": "sync", "seq": 4, "state": here})
+        assert answers[2]["type"] == "error"
+        assert answers[2]["resync"] == {"last_seq": 5, "pending_seq": None}
+
+    def test_a_monitor_that_requires_sync_accepts_nothing_else(self, monitor: Monitor) -> None:
+        monitor.require_sync("rebuilt from an incomplete log")
+        here = {"scene": {"objects": []}, "robot": {"room": "kitchen"}}
+        answers = run(monitor, before(1, GO_TO_MUG), {"type": "sync", "seq": 0, "state": here},
+                      before(1, GO_TO_MUG))
+        assert [a["type"] for a in answers] == ["error", "allow", "allow"]
+        assert "rebuilt from an incomplete log" in answers[0]["detail"]
+        assert not monitor.sync_required
+
+    def test_a_halted_monitor_refuses_a_sync(self, monitor: Monitor) -> None:
+        here = {"scene": {"objects": []}, "robot": {"room": "kitchen"}}
+        answers = run(monitor, before(1, TOGGLE_STOVE), {"type": "sync", "seq": 1, "state": here})
+        assert [a["type"] for a in answers] == ["violation", "halted"]
 
 
 class TestCounters:
