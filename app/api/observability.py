@@ -3,12 +3,15 @@
 In: every HTTP request (a pure ASGI middleware, cheap enough for the gate's hot path).
 Out: an `X-Request-ID` header on every answer (the caller's, or a new one), one JSON log line per
 request on the `safegate.access` logger, metrics at `GET /metrics`, and a 413 problem+json for a
-body larger than `max_body_bytes` (checked on the declared length and while streaming).
+body larger than `max_body_bytes`, checked on the declared length and, for a chunked body (or a
+declared length that lies), while it streams in: whatever the app made of the cut-off body is
+dropped and the 413 sent in its place.
 Fails: never blocks a request on logging or metrics.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import time
@@ -65,17 +68,23 @@ class ObservabilityMiddleware:
             return
 
         received = 0
+        too_large = False
 
         async def limited_receive() -> Message:
-            nonlocal received
+            nonlocal received, too_large
             message = await receive()
             if message["type"] == "http.request":
                 received += len(message.get("body", b""))
                 if received > self.max_body_bytes:
+                    too_large = True
                     raise _BodyTooLarge
             return message
 
         async def tagged_send(message: Message) -> None:
+            if too_large:
+                # The app caught the overflow (FastAPI turns any error while reading a body
+                # into "error parsing the body") and answers for it; the answer is our 413.
+                return
             if message["type"] == "http.response.start":
                 status_holder["status"] = message["status"]
                 message.setdefault("headers", [])
@@ -84,9 +93,9 @@ class ObservabilityMiddleware:
                 ]
             await send(message)
 
-        try:
+        with contextlib.suppress(_BodyTooLarge):
             await self.app(scope, limited_receive, tagged_send)
-        except _BodyTooLarge:
+        if too_large:
             await self._too_large(send, request_id)
             status_holder["status"] = 413
         self._observe(scope, status_holder["status"], started, request_id)
