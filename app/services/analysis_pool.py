@@ -20,6 +20,7 @@ Workers are forked from a fork server that has imported the pipeline and run it 
 in tens of milliseconds with its caches warm. As with any multiprocessing start method but
 `fork`, a script that builds the app must guard its entry point (`if __name__ == "__main__"`),
 since each worker imports the main module.
+Workers exit on their own within a second of the app's process dying, however it died.
 Fails: `Busy` when full; `Unavailable` when a worker died (the pool is replaced; the next call
 runs on fresh workers); whatever the job raises (SafeGate errors pickle whole).
 """
@@ -32,6 +33,7 @@ import math
 import multiprocessing
 import os
 import signal
+import threading
 import time
 from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
@@ -54,6 +56,7 @@ Job = Callable[..., T]
 WARMUP_MODULE = "app.services.analysis_warmup"
 LLM_PRELOAD_MODULE = "app.adapters.llm.preload"
 RETRY_AFTER_MAX_SECONDS = 60
+OWNER_CHECK_SECONDS = 1.0
 _EWMA_WEIGHT = 0.2
 _log = logging.getLogger("safegate.analysis_pool")
 
@@ -86,10 +89,46 @@ def build_worker_services(settings: Settings) -> Services:
     )
 
 
-def _init_worker(settings: Settings, templates_version: int) -> None:
+def _started_at(pid: int) -> str | None:
+    """When a process started (Linux: /proc), to tell it from a later one with its pid."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as stat:
+            return stat.read().rpartition(")")[2].split()[19]
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid: int, started: str | None) -> bool:
+    if started is not None:
+        return _started_at(pid) == started
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _watch_owner(owner: int) -> None:
+    """Exit when the app's process is gone (killed with SIGKILL, say): a worker's queues are
+    shared with its siblings, so it would otherwise wait for work forever, holding its
+    database connections (and the fork server, which lives while any worker does)."""
+    started = _started_at(owner)
+
+    def watch() -> None:
+        while _alive(owner, started):
+            time.sleep(OWNER_CHECK_SECONDS)
+        os._exit(0)
+
+    threading.Thread(target=watch, name="safegate-owner-watch", daemon=True).start()
+
+
+def _init_worker(settings: Settings, templates_version: int, owner: int) -> None:
     global _worker_services, _worker_templates_version
     # The app's process owns the workers' lifetime; Ctrl-C reaches the whole process group.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _watch_owner(owner)
     if settings.gate_worker_nice:
         os.nice(settings.gate_worker_nice)
     _worker_services = build_worker_services(settings)
@@ -141,7 +180,7 @@ class AnalysisPool:
             max_workers=self.workers,
             mp_context=context,
             initializer=_init_worker,
-            initargs=(self.settings, self._templates.version),
+            initargs=(self.settings, self._templates.version, os.getpid()),
         )
 
     async def start(self) -> None:
