@@ -38,6 +38,19 @@ class Settings(BaseSettings):
     solver_timeout_ms: int = Field(default=2000, ge=10)
 
     auth: Literal["open", "keys"] = "open"
+    # With auth=keys, /openapi.json, /docs and /redoc need a key too unless this opens them.
+    public_docs: bool = False
+    # Revoked keys' open websockets are closed within this many seconds (a key revoked through
+    # this process's API is closed at once; the poll catches the CLI and other processes).
+    revocation_poll_seconds: float = Field(default=0.5, gt=0, le=1.0)
+
+    # The analysis pool (app/services/analysis_pool.py): Stages 1-5 run in this many worker
+    # processes (0: one per core), with at most `gate_queue` more jobs waiting; beyond that the
+    # gate answers 503 with Retry-After. The workers run at this niceness (0-19) so the event
+    # loop (websockets, probes, reads) always gets a core first.
+    gate_workers: int = Field(default=0, ge=0, le=256)
+    gate_queue: int = Field(default=32, ge=0, le=100_000)
+    gate_worker_nice: int = Field(default=19, ge=0, le=19)
 
     llm_model: str | None = None
     llm_api_base: str | None = None

@@ -2,8 +2,9 @@
 and the routes. Nothing is built at import time; everything lives in the lifespan.
 
 Start-up: connect, migrate (`alembic upgrade head`), seed the template library idempotently, load
-the active templates into memory, build the analyzer. A failure there stops the start-up (it never
-serves with a half-built gate).
+the active templates into memory, build the analyzer, start the analysis pool's workers (Stages
+1-5 run there, off the event loop) and the watch that closes websockets of revoked keys. A
+failure there stops the start-up (it never serves with a half-built gate).
 """
 
 from __future__ import annotations
@@ -11,9 +12,10 @@ from __future__ import annotations
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
+import anyio.to_thread
 from fastapi import Depends, FastAPI
 
-from app.api import docs, observability, problems
+from app.api import docs, observability, problems, revocations
 from app.api.deps import require_key_when_locked, robot_writes
 from app.api.limits import json_body_within_limits
 from app.api.routes import (
@@ -31,6 +33,7 @@ from app.api.routes import (
 from app.config import Settings
 from app.metrics import Metrics
 from app.services import Services, build_services
+from app.services.analysis_pool import AnalysisPool
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -49,9 +52,14 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         services: Services = build_services(resolved, metrics=metrics)
         app.state.services = services
+        pool = AnalysisPool(resolved, services.templates)
         try:
-            yield
+            await pool.start()
+            app.state.analysis_pool = pool
+            async with revocations.watching(app, services):
+                yield
         finally:
+            await anyio.to_thread.run_sync(pool.close)
             services.close()
 
     app = FastAPI(
@@ -59,16 +67,21 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version="0.1.0",
         summary="Pre-execution safety gate and Task Safety Contracts for LLM-controlled robots",
         lifespan=lifespan,
-        docs_url=None,  # FastAPI's pages load from a CDN; app/api/docs.py serves local assets
-        redoc_url=None,
         # With SAFEGATE_AUTH=keys, every route (websockets too) needs a valid key; every JSON
         # body is checked for depth, numbers and unstorable text before any route sees it.
         dependencies=[Depends(require_key_when_locked), Depends(json_body_within_limits)],
+        # The schema and the docs pages are routes of ours (`app/api/docs.py`): with
+        # SAFEGATE_AUTH=keys they need a key like any other (SAFEGATE_PUBLIC_DOCS opens them),
+        # and they load their assets from the app, not a CDN.
+        openapi_url=None,
+        docs_url=None,
+        redoc_url=None,
     )
     app.state.settings = resolved
     problems.install(app)
     docs.install(app)
     observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes)
+    app.add_middleware(revocations.RevocationMiddleware)
     # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.
     # Routes are matched in order, so the robot's hot path (POST /gate) comes first.
     for router in (gate.router, verify.router, monitor.router):

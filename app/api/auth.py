@@ -11,18 +11,21 @@ become a `WebSocketException` with close code 1008 before the handshake is accep
 Roles: robot (gate, answers, verify, monitor), curator (template writes, re-evaluation), admin
 (keys, and everything the others may do). Template writes and re-evaluation always need a key;
 with `auth=keys` every endpoint does, except the probes and the curator page's static shell
-(it holds no data; the page calls the API with the key the curator types in).
+(it holds no data; the page calls the API with the key the curator types in). The OpenAPI schema
+and the docs pages need a key too unless `SAFEGATE_PUBLIC_DOCS=true` opens them.
 """
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Collection, MutableMapping
+from typing import Any
 
 from starlette.exceptions import WebSocketException
 from starlette.requests import HTTPConnection
 from starlette.status import WS_1008_POLICY_VIOLATION
 from starlette.websockets import WebSocket
 
+from app.api.docs import DOCS_PATHS
 from app.domain.errors import Forbidden, SafeGateError, Unauthorized
 from app.services import Services
 from app.services.access import find_key
@@ -71,6 +74,12 @@ def lookup_pending(connection: HTTPConnection) -> bool:
     if "authorization" in headers or "x-api-key" in headers:
         return True
     return connection.scope.get("type") == "websocket" and "api_key" in connection.query_params
+
+
+def cached_key(scope: MutableMapping[str, Any]) -> ApiKeyRecord | None:
+    """The key this connection was authenticated with, or None (none sent, or not checked yet)."""
+    key: ApiKeyRecord | None = scope.get("state", {}).get(_CACHE_ATTRIBUTE)
+    return key
 
 
 def authenticate(connection: HTTPConnection, services: Services) -> ApiKeyRecord | None:
@@ -126,9 +135,11 @@ def authorize(
     return key
 
 
-def is_open_path(path: str) -> bool:
-    """Whether a path needs no key even with `auth=keys` (probes, the page's static shell)."""
-    return path in OPEN_PATHS or path.startswith(OPEN_PREFIXES)
+def is_open_path(path: str, *, public_docs: bool = False) -> bool:
+    """Whether a path needs no key even with `auth=keys`: the probes, the page's static shell,
+    and the schema and docs pages when `public_docs` (SAFEGATE_PUBLIC_DOCS) opens them."""
+    return (path in OPEN_PATHS or path.startswith(OPEN_PREFIXES)
+            or (public_docs and path in DOCS_PATHS))
 
 
 def authorize_websocket(

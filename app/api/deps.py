@@ -1,6 +1,7 @@
 """Dependencies for routes, as `Annotated` aliases: the services, and who may call.
 
-`ServicesDep` is the services built in the lifespan (works on HTTP and websocket routes).
+`ServicesDep` is the services built in the lifespan (works on HTTP and websocket routes);
+`PoolDep` the analysis pool the deciding routes run Stages 1-5 in.
 Access, by role (see `app/api/auth.py` for the rules and the 401/403 answers):
 - `ReadAccess`: reads; open in `auth=open`, any valid key with `auth=keys`.
 - `RobotAccess`: gate, answers, verify, monitor; open in `auth=open`, else robot or admin.
@@ -35,6 +36,7 @@ from app.api.auth import (
 )
 from app.domain.errors import SafeGateError
 from app.services import Services
+from app.services.analysis_pool import AnalysisPool
 from app.store.records import ApiKeyRecord, ApiKeyRole
 
 _READ_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
@@ -46,6 +48,14 @@ async def get_services(connection: HTTPConnection) -> Services:
 
 
 ServicesDep = Annotated[Services, Depends(get_services)]
+
+
+async def get_analysis_pool(connection: HTTPConnection) -> AnalysisPool:
+    pool: AnalysisPool = connection.app.state.analysis_pool
+    return pool
+
+
+PoolDep = Annotated[AnalysisPool, Depends(get_analysis_pool)]
 
 
 def _authorize_now(
@@ -107,7 +117,7 @@ def allow_open(
 
 async def require_key_when_locked(connection: HTTPConnection, services: ServicesDep) -> None:
     """App-wide: with `auth=keys` every route but the probes and the page shell needs a key."""
-    if not is_open_path(connection.url.path):
+    if not is_open_path(connection.url.path, public_docs=services.settings.public_docs):
         await _authorize(connection, services, ANY_ROLE, open_when_open=True)
 
 

@@ -7,12 +7,14 @@ or websocket carries it, see `app.api.logs`), one log line per HTTP request on t
 `safegate.access` logger, with `gate_request_id` (the audit record's id, which the gate routes
 also answer in `X-Gate-Request-ID`) when the request decided something, metrics at
 `GET /metrics`, and a 413 problem+json for a body larger than `max_body_bytes` (checked on the
-declared length and while streaming).
+declared length and, for a chunked body or a declared length that lies, while it streams
+in: whatever the app made of the cut-off body is dropped and the 413 sent in its place).
 Fails: never blocks a request on logging or metrics.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import time
@@ -77,17 +79,23 @@ class ObservabilityMiddleware:
             return
 
         received = 0
+        too_large = False
 
         async def limited_receive() -> Message:
-            nonlocal received
+            nonlocal received, too_large
             message = await receive()
             if message["type"] == "http.request":
                 received += len(message.get("body", b""))
                 if received > self.max_body_bytes:
+                    too_large = True
                     raise _BodyTooLarge
             return message
 
         async def observed_send(message: Message) -> None:
+            if too_large:
+                # The app caught the overflow (FastAPI turns any error while reading a body
+                # into "error parsing the body") and answers for it; the answer is our 413.
+                return
             if message["type"] == "http.response.start":
                 outcome["status"] = message["status"]
                 for key, value in message.get("headers", ()):
@@ -95,9 +103,9 @@ class ObservabilityMiddleware:
                         outcome["gate_request_id"] = value.decode("latin-1")
             await send(message)
 
-        try:
+        with contextlib.suppress(_BodyTooLarge):
             await self.app(scope, limited_receive, observed_send)
-        except _BodyTooLarge:
+        if too_large:
             await self._too_large(send)
             outcome["status"] = 413
         self._observe(scope, outcome, started)

@@ -3,7 +3,8 @@
 In: exceptions from the domain tree (`app.domain.errors`), request validation errors, and anything
 unexpected. Out: `application/problem+json` bodies with `type`, `title`, `status`, `detail` and,
 for invalid input, `errors`: each with the offending field's path (e.g. `body.scene.objects.0.id`),
-and where known a line/column or plan step. Unexpected exceptions are 500s with no internals.
+and where known a line/column or plan step. `Busy` (the analysis pool is full) is a 503 with a
+`Retry-After` header. Unexpected exceptions are 500s with no internals.
 """
 
 from __future__ import annotations
@@ -32,12 +33,13 @@ _STATUS: list[tuple[type[errors.SafeGateError], int]] = [
 
 
 def problem(
-    status: int, title: str, detail: str, *, type_: str = "about:blank", **extra: Any
+    status: int, title: str, detail: str, *, type_: str = "about:blank",
+    headers: dict[str, str] | None = None, **extra: Any
 ) -> JSONResponse:
     """Build a problem+json response."""
     body: dict[str, Any] = {"type": type_, "title": title, "status": status, "detail": detail}
     body.update({k: v for k, v in extra.items() if v is not None})
-    return JSONResponse(body, status_code=status, media_type=PROBLEM_JSON)
+    return JSONResponse(body, status_code=status, media_type=PROBLEM_JSON, headers=headers)
 
 
 def status_for(error: errors.SafeGateError) -> int:
@@ -57,7 +59,9 @@ async def _domain_error(_: Request, exc: Exception) -> JSONResponse:
     extra: dict[str, Any] = dict(exc.extra)
     if exc.field is not None:
         extra["errors"] = [{"field": exc.field, "message": exc.detail, **exc.extra}]
-    return problem(status, exc.title, exc.detail, type_=_slug(exc), **extra)
+    headers = ({"Retry-After": str(exc.retry_after)} if isinstance(exc, errors.Busy)
+               else None)
+    return problem(status, exc.title, exc.detail, type_=_slug(exc), headers=headers, **extra)
 
 
 async def _validation_error(_: Request, exc: Exception) -> JSONResponse:

@@ -11,8 +11,11 @@ SafeGateError
 ├── Unauthorized            no valid API key where one is required (401)
 ├── Forbidden               the caller's key lacks the role (403)
 └── Unavailable             a dependency failed: database, solver, LLM (503); never an authorize
+    └── Busy                the analysis workers and their queue are full (503 + Retry-After)
 
-No HTTP status codes here: `app/api/problems.py` maps each class to one.
+No HTTP status codes here: `app/api/problems.py` maps each class to one. Every error pickles
+whole (detail, field, extras), so one raised in an analysis worker process reaches the caller as
+it was raised.
 """
 
 from __future__ import annotations
@@ -28,6 +31,19 @@ class SafeGateError(Exception):
         self.detail = detail
         self.field = field
         self.extra = extra
+
+    def __reduce__(self) -> tuple[object, ...]:
+        # The default rebuilds with `cls(*args)`, which loses `field` and `extra` and fails for
+        # subclasses with required keyword arguments (PlanError's `step`).
+        return _rebuild, (type(self), self.args, self.__dict__)
+
+
+def _rebuild(cls: type[SafeGateError], args: tuple[object, ...],
+             state: dict[str, object]) -> SafeGateError:
+    error = cls.__new__(cls)
+    error.args = args
+    error.__dict__.update(state)
+    return error
 
 
 class InvalidInput(SafeGateError):
@@ -86,3 +102,13 @@ class Forbidden(SafeGateError):
 
 class Unavailable(SafeGateError):
     title = "Dependency unavailable"
+
+
+class Busy(Unavailable):
+    """Too much work is queued already; the caller should retry after `retry_after` seconds."""
+
+    title = "Busy"
+
+    def __init__(self, detail: str, *, retry_after: int) -> None:
+        super().__init__(detail, retry_after=retry_after)
+        self.retry_after = retry_after

@@ -27,18 +27,24 @@ from app.store import Repository, create_engine_for, migrate, seed_templates
 
 
 class TemplateCache:
-    """The active templates in memory, reloaded after a curator changes the library."""
+    """The active templates in memory, reloaded after a curator changes the library.
+
+    `version` counts the reloads; the analysis workers reload theirs when a job carries a
+    version they have not seen.
+    """
 
     def __init__(self, repository: Repository) -> None:
         self._repository = repository
         self._lock = threading.Lock()
         self._index = TemplateIndex(())
+        self.version = 0
         self.refresh()
 
     def refresh(self) -> None:
         index = TemplateIndex(self._repository.list_active_templates())
         with self._lock:
             self._index = index
+            self.version += 1
 
     def index(self) -> TemplateIndex:
         return self._index

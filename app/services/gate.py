@@ -14,6 +14,8 @@ import uuid
 from dataclasses import dataclass
 from typing import Any
 
+from pydantic import ValidationError
+
 from app.domain.analysis import apply_answers
 from app.domain.contracts import Contract
 from app.domain.errors import InvalidInput
@@ -81,8 +83,23 @@ def answer(services: Services, request_id: str, answers: dict[str, Any]) -> Deci
         raise InvalidInput("give at least one answer", field="body")
     original = services.repository.get_gate_record(request_id)
     unknowns = original.hazard_report.unknowns if original.hazard_report else ()
-    updated = apply_answers(original.request, answers, unknowns)
+    try:
+        updated = apply_answers(original.request, answers, unknowns)
+    except ValidationError as error:
+        raise _invalid_answer(error, answers) from error
     return decide(services, updated, parent_request_id=request_id)
+
+
+def _invalid_answer(error: ValidationError, answers: dict[str, Any]) -> InvalidInput:
+    """An answer that makes the request invalid (`{"mass_kg": -1}`, `{"age_group": "elf"}`),
+    named by its key in the answers body."""
+    first = error.errors()[0]
+    where = [str(part) for part in first.get("loc", ())]
+    written_as = {"on": "is_on", "temperature": "hot"}
+    key = next((k for part in reversed(where)
+                for k in (part, written_as.get(part)) if k in answers), None)
+    return InvalidInput(f"the answer does not fit: {first.get('msg', 'invalid')}",
+                        field=f"body.{key}" if key is not None else "body")
 
 
 def reevaluate(services: Services, request_id: str) -> Decided:

@@ -10,13 +10,15 @@ stores the 20-condition contract of `monitor_step.py` in it). The gate clients a
 sessions run in two separate client processes (each one asyncio loop), so neither starves the
 other; every client holds its own connection. Each gate client posts the benchmark's requests in
 turn, as fast as it is answered (closed loop: the gate is saturated, so its latency is mostly
-queueing, clients / throughput). Each monitor session sends `before`/`after` pairs of actions the
-contract allows at `--monitor-rate` actions a second (a robot's pace; 0 sends as fast as answers
-come, which floods the event loop and starves the gate) and times the pair. Traffic only goes
+queueing, clients / throughput). Beyond the analysis pool's workers and queue the gate sheds
+load with 503 + Retry-After: such answers are counted ("503 shed") and the client tries again
+after a short pause; they are not errors. Each monitor session sends `before`/`after` pairs of
+actions the contract allows at `--monitor-rate` actions a second (a robot's pace; 0 sends as
+fast as answers come) and times the pair. Traffic only goes
 to loopback; every loop stops at the deadline and the whole run is bounded by `--seconds` plus
 a fixed grace.
-Out: the table; exit 1 if any request failed, any answer was not the expected kind, or any client
-could not connect.
+Out: the table; exit 1 if any request failed (a 503 with Retry-After is shedding, not failing),
+any answer was not the expected kind, or any client could not connect.
 """
 
 from __future__ import annotations
@@ -44,6 +46,7 @@ from monitor_ws import PICK, PUT, store_contract
 CASES = Path(__file__).resolve().parents[1] / "cases" / "benchmark.jsonl"
 GRACE_SECONDS = 60.0
 ANSWER_TIMEOUT = 30.0
+BUSY_PAUSE_SECONDS = 0.05
 
 
 def percentile(values: list[float], fraction: float) -> float:
@@ -52,7 +55,7 @@ def percentile(values: list[float], fraction: float) -> float:
 
 
 async def gate_client(base: str, bodies: list[dict[str, Any]], slot: int, deadline: float,
-                      latencies: list[float], errors: list[str]) -> None:
+                      latencies: list[float], errors: list[str], shed: list[int]) -> None:
     limits = httpx.Limits(max_connections=1)
     async with httpx.AsyncClient(base_url=base, timeout=ANSWER_TIMEOUT, limits=limits) as client:
         i = slot
@@ -62,6 +65,10 @@ async def gate_client(base: str, bodies: list[dict[str, Any]], slot: int, deadli
                 response = await client.post("/gate", json=bodies[i % len(bodies)])
             except httpx.HTTPError as error:
                 errors.append(type(error).__name__)
+                continue
+            if response.status_code == 503 and "retry-after" in response.headers:
+                shed.append(1)  # the analysis pool is full: the gate sheds load, as it should
+                await asyncio.sleep(BUSY_PAUSE_SECONDS)
                 continue
             if response.status_code == 200 and "decision" in response.json():
                 latencies.append((time.perf_counter() - started) * 1000)
@@ -98,12 +105,14 @@ async def gate_load(base: str, clients: int, seconds: float) -> dict[str, Any]:
     bodies = [json.loads(line)["request"] for line in CASES.read_text().splitlines() if line]
     latencies: list[float] = []
     errors: list[str] = []
+    shed: list[int] = []
     started = time.perf_counter()
     deadline = started + seconds
     await asyncio.wait_for(asyncio.gather(*(
-        gate_client(base, bodies, slot * 7, deadline, latencies, errors)
+        gate_client(base, bodies, slot * 7, deadline, latencies, errors, shed)
         for slot in range(clients))), seconds + GRACE_SECONDS)
-    return {"latencies": latencies, "errors": errors, "elapsed": time.perf_counter() - started}
+    return {"latencies": latencies, "errors": errors, "shed": len(shed),
+            "elapsed": time.perf_counter() - started}
 
 
 async def monitor_load(base: str, contract_id: str, sessions: int, seconds: float,
@@ -119,7 +128,8 @@ async def monitor_load(base: str, contract_id: str, sessions: int, seconds: floa
         monitor_session(base, session_id, deadline, rate, latencies, errors)
         for session_id in ids)),
         seconds + GRACE_SECONDS)
-    return {"latencies": latencies, "errors": errors, "elapsed": time.perf_counter() - started}
+    return {"latencies": latencies, "errors": errors, "shed": 0,
+            "elapsed": time.perf_counter() - started}
 
 
 def _run_in_process(kind: str, args: tuple[Any, ...], results: Any) -> None:
@@ -168,8 +178,8 @@ def main() -> None:
 
     table = Table(title=(f"Load on loopback, one uvicorn worker, SQLite: {options.seconds:.0f} s, "
                          f"{os.cpu_count()} CPUs, load average before {before}"))
-    for column in ("traffic", "clients", "completed", "errors", "p50 ms", "p90 ms", "p99 ms",
-                   "max ms", "per second"):
+    for column in ("traffic", "clients", "completed", "errors", "503 shed", "p50 ms", "p90 ms",
+                   "p99 ms", "max ms", "per second"):
         table.add_column(column, justify="left" if column == "traffic" else "right")
     rows = (("POST /gate", options.gate_clients, collected["gate"]),
             (f"monitor before+after, {options.monitor_rate:g}/s each" if options.monitor_rate
@@ -180,8 +190,9 @@ def main() -> None:
         ms = result["latencies"]
         failed = failed or bool(result["errors"]) or not ms
         table.add_row(name, str(clients), str(len(ms)), str(len(result["errors"])),
-                      f"{percentile(ms, 0.5):.1f}", f"{percentile(ms, 0.9):.1f}",
-                      f"{percentile(ms, 0.99):.1f}", f"{max(ms, default=0):.1f}",
+                      str(result["shed"]), f"{percentile(ms, 0.5):.1f}",
+                      f"{percentile(ms, 0.9):.1f}", f"{percentile(ms, 0.99):.1f}",
+                      f"{max(ms, default=0):.1f}",
                       f"{len(ms) / result['elapsed']:.0f}")
     console = Console()
     console.print(table)

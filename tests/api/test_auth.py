@@ -79,6 +79,27 @@ class TestKeysMode:
             assert answer.status_code == 401, path
             assert answer.headers["content-type"].startswith("application/problem+json")
 
+    @pytest.mark.parametrize("path", ["/openapi.json", "/docs", "/redoc",
+                                      "/docs/oauth2-redirect"])
+    def test_the_schema_and_docs_need_a_key(self, locked: TestClient, path: str) -> None:
+        refused = locked.get(path)
+        assert refused.status_code == 401
+        assert refused.headers["content-type"].startswith("application/problem+json")
+        assert locked.get(path, headers=bearer(key(locked, ApiKeyRole.ROBOT))).status_code == 200
+
+    def test_the_schema_is_the_apis_and_hides_nothing_new(self, locked: TestClient) -> None:
+        schema = locked.get("/openapi.json", headers=bearer(key(locked, ApiKeyRole.CURATOR)))
+        paths = schema.json()["paths"]
+        assert "/gate" in paths and "/verify" in paths
+        assert not {"/openapi.json", "/docs", "/redoc"} & set(paths)
+
+    def test_a_setting_opens_the_schema_and_docs(self, sqlite_url: str) -> None:
+        settings = Settings(database_url=sqlite_url, auth="keys", public_docs=True)
+        with TestClient(create_app(settings)) as client:
+            for path in ("/openapi.json", "/docs", "/redoc"):
+                assert client.get(path).status_code == 200, path
+            assert client.get("/templates").status_code == 401  # and nothing else
+
     def test_probes_and_page_shell_stay_open(self, locked: TestClient) -> None:
         for path in ("/healthz", "/readyz", "/curator", "/curator/static/curator.js"):
             assert locked.get(path).status_code == 200, path
@@ -144,6 +165,11 @@ class TestOpenMode:
     def test_gate_and_reads_need_no_key(self, client: TestClient) -> None:
         assert client.post("/gate", json=GATE_REQUEST).status_code == 200
         assert client.get("/templates").status_code == 200
+
+    def test_the_schema_and_docs_need_no_key(self, client: TestClient) -> None:
+        for path in ("/openapi.json", "/docs", "/redoc"):
+            assert client.get(path).status_code == 200, path
+        assert "swagger-ui" in client.get("/docs").text
 
     def test_a_presented_key_is_still_checked(self, client: TestClient) -> None:
         assert client.get("/templates", headers=bearer("sg_not_a_key")).status_code == 401

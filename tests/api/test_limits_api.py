@@ -111,6 +111,79 @@ class TestUnstorableText:
         assert stored["request"]["command"] == command
 
 
+def with_object_property(key: str, value: Any) -> dict[str, Any]:
+    return {"command": "bring the mug", "scene": {"objects": [
+        {"id": "counter_1", "type": "CounterTop"},
+        {"id": "mug_1", "type": "Mug", "properties": {key: value}}]}}
+
+
+def with_person_property(key: str, value: Any) -> dict[str, Any]:
+    return {"command": "bring the mug to grandpa", "scene": {"people": [
+        {"id": "grandpa", "role": "grandfather", "properties": {key: value}}]}}
+
+
+class TestPropertyValues:
+    """Property values with a fixed meaning are checked: a 422 names the property."""
+
+    @pytest.mark.parametrize(("key", "value"), [
+        ("mass_kg", -0.5), ("mass_kg", "heavy"), ("mass_kg", True), ("temperature", "warm"),
+        ("temperature", 80), ("sharp", "maybe"), ("on", 7), ("lidded", {"yes": 1}),
+        ("contents", 3)])
+    def test_an_object_property_out_of_its_meaning_is_refused(
+            self, client_on: TestClient, key: str, value: Any) -> None:
+        response = client_on.post("/gate", json=with_object_property(key, value))
+        assert refused_field(response) == f"body.scene.objects.1.properties.{key}"
+        assert response.json()["errors"][0]["message"]
+
+    @pytest.mark.parametrize(("key", "value"), [
+        ("age_group", "toddler"), ("mobility", "flying"), ("cognitive_state", "grumpy"),
+        ("pregnant", "perhaps"), ("allergies", 4), ("mass_kg", -70)])
+    def test_a_person_property_out_of_its_meaning_is_refused(
+            self, client: TestClient, key: str, value: Any) -> None:
+        response = client.post("/gate", json=with_person_property(key, value))
+        assert refused_field(response) == f"body.scene.people.0.properties.{key}"
+
+    @pytest.mark.parametrize(("key", "value", "stored"), [
+        ("mass_kg", 0, 0.0), ("mass_kg", 2.5, 2.5), ("temperature", " Hot ", "hot"),
+        ("temperature", "room", "room"), ("sharp", "yes", True), ("on", False, False),
+        ("open", None, None), ("contents", "coffee", "coffee"), ("colour", "blue", "blue"),
+        ("anything_else", {"free": [1, "x"]}, {"free": [1, "x"]})])
+    def test_values_within_their_meaning_are_decided_and_stored_as_read(
+            self, client: TestClient, key: str, value: Any, stored: Any) -> None:
+        response = client.post("/gate", json=with_object_property(key, value))
+        assert response.status_code == 200, response.text
+        record = client.get(f"/gate/{response.json()['request_id']}").json()
+        assert record["request"]["scene"]["objects"][1]["properties"][key] == stored
+
+    def test_a_monitor_initial_state_is_held_to_the_same_meanings(
+            self, client: TestClient) -> None:
+        contract_id = store_contract(repository_of(client))
+        state = with_object_property("mass_kg", -1)
+        response = client.post("/monitor", json={"contract_id": contract_id,
+                                                 "initial_state": {"scene": state["scene"]}})
+        assert refused_field(response) == "body.initial_state.scene.objects.1.properties.mass_kg"
+
+    def test_a_verify_initial_state_is_held_to_the_same_meanings(
+            self, client: TestClient) -> None:
+        state = with_object_property("temperature", "lukewarm")
+        response = client.post("/verify", json={
+            "contract": {"invariants": []}, "plan": [],
+            "initial_state": {"scene": state["scene"]}})
+        assert refused_field(response) == (
+            "body.initial_state.scene.objects.1.properties.temperature")
+
+    def test_an_answer_out_of_its_meaning_is_a_422_naming_it(self, client: TestClient) -> None:
+        asked = client.post("/gate", json={
+            "command": "bring the coffee to grandpa",
+            "scene": {"objects": [{"id": "mug_1", "type": "Mug",
+                                   "properties": {"contents": "coffee"}}],
+                      "people": [{"id": "grandpa", "role": "grandfather"}]},
+            "user": {"person_id": "grandpa"}}).json()
+        response = client.post(f"/gate/{asked['request_id']}/answers",
+                               json={"age_group": "elf"})
+        assert refused_field(response) == "body.age_group"
+
+
 @pytest.fixture
 def tight_client(sqlite_url: str) -> Iterator[TestClient]:
     settings = Settings(database_url=sqlite_url, max_command_chars=40, max_scene_entities=3,

@@ -4,15 +4,17 @@ from __future__ import annotations
 
 import json
 import logging
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
+import httpx
 import pytest
 from fastapi.testclient import TestClient
 
 from app.api.logs import JsonLogFormatter
 from app.config import Settings
 from app.main import create_app
+from tests.api.conftest import LiveServer
 
 
 @pytest.fixture
@@ -52,6 +54,40 @@ class TestBodyLimit:
 
     def test_a_body_within_the_limit_is_decided(self, small_client: TestClient) -> None:
         assert small_client.post("/gate", json={"command": "wave hello"}).status_code == 200
+
+    def test_a_chunked_oversized_body_is_refused_with_413_not_422(
+            self, small_client: TestClient) -> None:
+        response = small_client.post("/gate", content=_chunks(json.dumps({"command": "z" * 5000})),
+                                     headers={"content-type": "application/json"})
+        assert response.status_code == 413, response.text
+        assert response.headers["content-type"] == "application/problem+json"
+        assert response.json()["status"] == 413
+        assert "safegate_gate_decisions_total{" not in small_client.get("/metrics").text
+
+    def test_a_chunked_body_within_the_limit_is_decided(self, small_client: TestClient) -> None:
+        response = small_client.post("/gate", content=_chunks(json.dumps({"command": "wave"})),
+                                     headers={"content-type": "application/json"})
+        assert response.status_code == 200, response.text
+
+    def test_a_chunked_oversized_body_gets_413_from_uvicorn(
+            self, live_server: Callable[..., LiveServer]) -> None:
+        server = live_server(SAFEGATE_MAX_BODY_BYTES="2048", SAFEGATE_LOG_LEVEL="warning")
+        body = json.dumps({"command": "z" * 5000})
+        for path in ("/gate", "/verify", "/templates/validate"):
+            response = httpx.post(server.base_url + path, content=_chunks(body), timeout=30,
+                                  headers={"content-type": "application/json"})
+            assert response.status_code == 413, (path, response.text)
+            assert response.headers["content-type"] == "application/problem+json"
+            assert response.request.headers["transfer-encoding"] == "chunked"
+        # The connection and the server are fine afterwards.
+        assert httpx.get(server.base_url + "/healthz", timeout=10).status_code == 200
+
+
+def _chunks(text: str, size: int = 512) -> Iterator[bytes]:
+    """The body as a generator: httpx sends it chunked, with no Content-Length."""
+    data = text.encode()
+    for start in range(0, len(data), size):
+        yield data[start:start + size]
 
 
 class TestAccessLog:

@@ -4,7 +4,7 @@
 grouped by the hazard class they wait for. Once an active template covers a class, a curator
 re-decides them one by one (`POST /gate/{id}/reevaluate`) or all at once
 (`POST /extensions/reevaluate {"hazard_class": ...}`); re-evaluation runs the normal pipeline
-and each new decision is linked to the one it follows.
+(in the analysis pool, off the event loop) and each new decision is linked to the one it follows.
 """
 
 from __future__ import annotations
@@ -14,9 +14,10 @@ from typing import Any
 from fastapi import APIRouter, Response
 from pydantic import BaseModel, Field
 
-from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.api import analysis_jobs
+from app.api.deps import CuratorKey, PoolDep, ReadAccess, ServicesDep
 from app.api.observability import GATE_REQUEST_ID_HEADER
-from app.api.schemas import GateResponse, gate_response
+from app.api.schemas import GateResponse
 from app.services import extensions
 from app.services.extensions import PendingClass, WaitingRequest
 
@@ -75,25 +76,22 @@ def pending_extensions(services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
 
 
 @router.post("/extensions/reevaluate", response_model=ReevaluateClassResponse)
-def reevaluate_class(
-    body: ReevaluateClassRequest, services: ServicesDep, _: CuratorKey
-) -> ReevaluateClassResponse:
+async def reevaluate_class(
+    body: ReevaluateClassRequest, services: ServicesDep, pool: PoolDep, _: CuratorKey
+) -> Response:
     """Decide again every request waiting on a class that an active template now covers."""
-    results = extensions.reevaluate_class(services, body.hazard_class)
-    return ReevaluateClassResponse(
-        hazard_class=body.hazard_class,
-        count=len(results),
-        results=[
-            ReevaluatedRequest(reevaluated_request_id=old, decision=gate_response(decided))
-            for old, decided in results
-        ],
-    )
+    text, answers = await pool.run(analysis_jobs.reevaluate_class, body.hazard_class)
+    for answer in answers:
+        answer.count(services.metrics)
+    return Response(text, media_type="application/json")
 
 
 @router.post("/gate/{request_id}/reevaluate", response_model=GateResponse)
-def reevaluate_request(request_id: str, services: ServicesDep, _: CuratorKey,
-                       response: Response) -> GateResponse:
+async def reevaluate_request(
+    request_id: str, services: ServicesDep, pool: PoolDep, _: CuratorKey
+) -> Response:
     """Decide a waiting request again with today's library (its chain's latest decision)."""
-    decided = extensions.reevaluate_request(services, request_id)
-    response.headers[GATE_REQUEST_ID_HEADER] = str(decided.record.id)
-    return gate_response(decided)
+    answer = await pool.run(analysis_jobs.reevaluate_request, request_id)
+    answer.count(services.metrics)
+    return Response(answer.body, media_type="application/json",
+                    headers={GATE_REQUEST_ID_HEADER: answer.record_id})

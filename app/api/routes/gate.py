@@ -1,9 +1,10 @@
 """POST /gate and the audit trail: a command in, a decision with its reasons out.
 
-The decide routes run their work (the pipeline, the audit write, the response's JSON) right in the
-event loop. It is CPU-bound Python, so a worker thread only adds a GIL hand-over: measured with
-`bench/perf/gate_http.py`, handing even just the audit write to a thread cost a third of the
-throughput. They answer with the JSON `GateResponse` already encoded, so FastAPI does not
+The deciding routes hand their work (Stages 1-4, the audit write, the answer's JSON) to the
+analysis pool (`app/services/analysis_pool.py`): worker processes, so the event loop keeps
+answering websockets, probes and reads while requests are analysed, however long an analysis
+(or an LLM) takes. When the workers and their queue are full, the gate answers 503 with
+Retry-After. The answer is the `GateResponse` JSON the worker encoded, so FastAPI does not
 validate and serialize it a second time.
 """
 
@@ -13,37 +14,33 @@ from typing import Any
 
 from fastapi import APIRouter, Body, Response
 
-from app.api.deps import ServicesDep
+from app.api import analysis_jobs
+from app.api.deps import PoolDep, ServicesDep
 from app.api.limits import check_gate_request
 from app.api.observability import GATE_REQUEST_ID_HEADER
-from app.api.schemas import GateResponse, gate_response
+from app.api.schemas import GateResponse
 from app.domain.models import GateRequest
-from app.services import Services, gate
-from app.services.gate import Decided
+from app.services import gate
 
 router = APIRouter(tags=["gate"])
 
 
-def _json(decided: Decided) -> Response:
+def _json(answer: analysis_jobs.GateAnswer, services: ServicesDep) -> Response:
+    answer.count(services.metrics)
     # The audit record's id also in a header, so the access log line links the HTTP request id
     # to the decision it produced (app/api/observability.py).
-    return Response(gate_response(decided).model_dump_json(), media_type="application/json",
-                    headers={GATE_REQUEST_ID_HEADER: str(decided.record.id)})
-
-
-def _decide(services: Services, request: GateRequest) -> Response:
-    check_gate_request(request, services.settings)
-    return _json(gate.decide(services, request))
-
-
-def _answer(services: Services, request_id: str, answers: dict[str, Any]) -> Response:
-    return _json(gate.answer(services, request_id, answers))
+    return Response(answer.body, media_type="application/json",
+                    headers={GATE_REQUEST_ID_HEADER: answer.record_id})
 
 
 @router.post("/gate", response_model=GateResponse)
-async def post_gate(request: GateRequest, services: ServicesDep) -> Response:
-    """Decide a command: authorize (with a contract), defer (with a question) or reject."""
-    return _decide(services, request)
+async def post_gate(request: GateRequest, services: ServicesDep, pool: PoolDep) -> Response:
+    """Decide a command: authorize (with a contract), defer (with a question) or reject.
+
+    503 with Retry-After when the analysis workers and their queue are full.
+    """
+    check_gate_request(request, services.settings)
+    return _json(await pool.run(analysis_jobs.decide, request), services)
 
 
 @router.get("/gate/{request_id}")
@@ -56,9 +53,10 @@ def get_gate(request_id: str, services: ServicesDep) -> dict[str, Any]:
 async def post_answers(
     request_id: str,
     services: ServicesDep,
+    pool: PoolDep,
     answers: dict[str, Any] = Body(  # noqa: B008 - FastAPI's way to declare a body
         ..., examples=[{"age_group": "adult"}, {"contents": "water"}]
     ),
 ) -> Response:
     """Answer the clarifying question; the pipeline runs again and links to the original."""
-    return _answer(services, request_id, answers)
+    return _json(await pool.run(analysis_jobs.answer, request_id, answers), services)

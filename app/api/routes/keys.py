@@ -1,17 +1,20 @@
 """API keys over HTTP, for admins (the first admin key comes from `safegate keys create`).
 
 The secret of a new key is in the creation answer only; the store keeps its SHA-256.
-`GET /keys/me` tells any key holder who they are (the curator page uses it).
+`GET /keys/me` tells any key holder who they are (the curator page uses it). Revoking a key
+closes its open websockets (`app/api/revocations.py`).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from fastapi import APIRouter, status
+from fastapi import APIRouter, Request, status
 from pydantic import BaseModel, Field
+from starlette.concurrency import run_in_threadpool
 
 from app.api.deps import AdminKey, AnyKey, ServicesDep
+from app.api.revocations import open_websockets
 from app.services.access import issue_api_key
 from app.store.records import ApiKeyRecord, ApiKeyRole
 
@@ -47,6 +50,9 @@ def create_key(body: CreateKeyRequest, services: ServicesDep, _: AdminKey) -> di
 
 
 @router.delete("/keys/{key_id}")
-def revoke_key(key_id: str, services: ServicesDep, _: AdminKey) -> dict[str, Any]:
-    """Revoke a key for good."""
-    return _key(services.repository.revoke_api_key(key_id))
+async def revoke_key(key_id: str, request: Request, services: ServicesDep,
+                     _: AdminKey) -> dict[str, Any]:
+    """Revoke a key for good; its open websockets are closed (code 4401) before this answers."""
+    record = await run_in_threadpool(services.repository.revoke_api_key, key_id)
+    await open_websockets(request.app).close_key(key_id)
+    return _key(record)

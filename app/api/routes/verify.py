@@ -1,19 +1,23 @@
-"""POST /verify: Stage 5, a plan checked against its Task Safety Contract before anything moves."""
+"""POST /verify: Stage 5, a plan checked against its Task Safety Contract before anything moves.
+
+The solver runs in the analysis pool (`app/services/analysis_pool.py`), off the event loop, like
+the gate's Stages 1-4; a full pool answers 503 with Retry-After.
+"""
 
 from __future__ import annotations
 
-from fastapi import APIRouter
+from fastapi import APIRouter, Response
 
-from app.api.deps import ServicesDep
+from app.api import analysis_jobs
+from app.api.deps import PoolDep, ServicesDep
 from app.api.limits import check_initial_state, check_plan
-from app.api.verify_schemas import VerifyRequest, VerifyResponse, verify_response
-from app.services import verification
+from app.api.verify_schemas import VerifyRequest, VerifyResponse
 
 router = APIRouter(tags=["verify"])
 
 
 @router.post("/verify", response_model=VerifyResponse)
-def post_verify(request: VerifyRequest, services: ServicesDep) -> VerifyResponse:
+async def post_verify(request: VerifyRequest, services: ServicesDep, pool: PoolDep) -> Response:
     """Verify a plan for every value of the unknown facts; 200 whether or not it passes.
 
     A failed verification spends one of the contract's attempts; the last one downgrades the
@@ -21,11 +25,6 @@ def post_verify(request: VerifyRequest, services: ServicesDep) -> VerifyResponse
     """
     check_plan(request.plan, services.settings)
     check_initial_state(request.initial_state, services.settings)
-    verified = verification.verify(
-        services,
-        request.plan,
-        contract_id=request.contract_id,
-        contract=None if request.contract is None else request.contract.to_domain(),
-        initial_state=request.initial_state,
-    )
-    return verify_response(verified)
+    answer = await pool.run(analysis_jobs.verify, request)
+    answer.count(services.metrics)
+    return Response(answer.body, media_type="application/json")

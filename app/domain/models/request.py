@@ -3,21 +3,90 @@
 In: JSON from a robot planner, shaped as `shared/spec/gate-request.md` describes.
 Out: frozen pydantic models. Every field but `command` is optional and a missing field means
 "unknown", never "safe": downstream stages must treat `None` as not known.
-Fails: pydantic `ValidationError` on a shape that does not fit (the API maps it to a 422).
+Property values with a fixed meaning (`mass_kg` >= 0, `temperature` hot/cold/room, flags, a
+person's age group...) are checked; other properties pass as given.
+Fails: pydantic `ValidationError` on a shape that does not fit (the API maps it to a 422 naming
+the field, e.g. `body.scene.objects.0.properties.mass_kg`).
 """
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
+from typing_extensions import TypedDict
 
 AgeGroup = Literal["infant", "child", "teen", "adult", "older_adult"]
 Mobility = Literal["independent", "assisted", "wheelchair", "bedridden"]
 CognitiveState = Literal["typical", "impaired", "asleep", "intoxicated"]
 
+Temperature = Literal["hot", "cold", "room"]
+
 MAX_COMMAND_CHARS = 2000
 MAX_ENTITIES = 500
+
+
+def _word(value: object) -> object:
+    """Words are read as the world model reads them: trimmed, lower case."""
+    return value.strip().lower() if isinstance(value, str) else value
+
+
+def _listed(value: object) -> object:
+    return [value] if isinstance(value, str) else value
+
+
+# Property values with a fixed meaning (`shared/spec/gate-request.md`). Each may be null
+# (unknown); any other key is free. A flag is a JSON boolean or a word that means one ("yes",
+# "off"...); a mass is a number, never a boolean or text.
+_Flag = bool | None
+_Mass = Annotated[float, Field(ge=0, allow_inf_nan=False, strict=True)] | None
+
+
+class ObjectProperties(TypedDict, total=False):
+    """`objects[].properties`: the keys with a fixed meaning are checked; others pass as given."""
+
+    __pydantic_config__ = ConfigDict(extra="allow")  # type: ignore[misc]
+
+    temperature: Annotated[Temperature | None, BeforeValidator(_word)]
+    mass_kg: _Mass
+    contents: str | None
+    lidded: _Flag
+    sealed: _Flag
+    sharp: _Flag
+    fragile: _Flag
+    toxic: _Flag
+    flammable: _Flag
+    on: _Flag
+    open: _Flag
+    broken: _Flag
+    dirty: _Flag
+    electrical: _Flag
+    wet: _Flag
+
+
+class PersonProperties(TypedDict, total=False):
+    """`people[].properties`: the keys with a fixed meaning are checked; others pass as given."""
+
+    __pydantic_config__ = ConfigDict(extra="allow")  # type: ignore[misc]
+
+    age_group: Annotated[AgeGroup | None, BeforeValidator(_word)]
+    mobility: Annotated[Mobility | None, BeforeValidator(_word)]
+    cognitive_state: Annotated[CognitiveState | None, BeforeValidator(_word)]
+    allergies: Annotated[list[str] | None, BeforeValidator(_listed)]  # "peanut" = ["peanut"]
+    pregnant: _Flag
+    visual_impairment: bool | str | None  # a flag, or what it is ("low vision")
+    hearing_impairment: bool | str | None
+    mass_kg: _Mass
+
+
+# Validated as the TypedDicts above (so a bad value is a 422 naming e.g.
+# `body.scene.objects.3.properties.mass_kg`), read everywhere as the plain dicts they are.
+if TYPE_CHECKING:
+    _ObjectPropertiesField = dict[str, Any]
+    _PersonPropertiesField = dict[str, Any]
+else:
+    _ObjectPropertiesField = ObjectProperties
+    _PersonPropertiesField = PersonProperties
 
 
 class _Frozen(BaseModel):
@@ -58,7 +127,7 @@ class SceneObject(_Frozen):
     on: str | None = None
     inside: str | None = Field(default=None, alias="in")
     position: Position | None = None
-    properties: dict[str, Any] = Field(default_factory=dict)
+    properties: _ObjectPropertiesField = Field(default_factory=dict)
 
 
 class Relation(_Frozen):
@@ -78,7 +147,7 @@ class Person(_Frozen):
     room: str | None = None
     posture: str | None = None
     position: Position | None = None
-    properties: dict[str, Any] = Field(default_factory=dict)
+    properties: _PersonPropertiesField = Field(default_factory=dict)
 
 
 class Scene(_Frozen):

@@ -10,6 +10,7 @@ Fails: `Conflict` for a key hash already stored, `NotFound` for an unknown key i
 from __future__ import annotations
 
 import hashlib
+from collections.abc import Collection
 from typing import Any
 
 from sqlalchemy import select
@@ -99,6 +100,18 @@ class AccessQueries(RepositoryBase):
                 raise NotFound(f"no API key {key_id!r}")
             row.revoked = True
             return _to_key(row)
+
+    def revoked_api_key_ids(self, key_ids: Collection[str]) -> set[str]:
+        """Which of these key ids are revoked (unknown ids are not reported)."""
+        if not key_ids:
+            return set()
+        with self._transaction("checking API keys for revocation") as session:
+            rows = session.scalars(
+                select(ApiKeyRow.id)
+                .where(ApiKeyRow.id.in_(list(key_ids)))
+                .where(ApiKeyRow.revoked.is_(True))
+            )
+            return set(rows.all())
 
     def get_cached_analysis(
         self, cache_key: str, model: str, prompt_version: str

@@ -1,0 +1,247 @@
+"""The analysis pool: Stages 1-5 run in worker processes, so nothing on the event loop waits
+behind another request's analysis.
+
+In: a job (a module-level function `job(services, *args)`, picklable by reference) and its
+arguments, from an async route. Out: the job's return value, awaited without blocking the loop.
+The analysis is CPU-bound Python (and an LLM analyzer blocks on the network for up to its
+timeout), so a thread would still hold the GIL against the loop; processes do not. Websockets,
+probes and reads stay on the loop and never queue behind an analysis.
+
+Sizing: `gate_workers` processes (0: one per core the process may use), each with its own
+`Services` (engine, repository, template cache, analyzer; no migration or seeding), at niceness
+`gate_worker_nice` so the loop's process gets a core first. At most `gate_workers + gate_queue`
+jobs are in the pool at once; one more raises `Busy` (503 with Retry-After, estimated from the
+recent job times and the queue) instead of letting the queue, and every caller's wait, grow.
+
+Templates: every job carries the main process's `TemplateCache.version`; a worker that has not
+seen that version reloads the active templates from the database before running the job.
+Workers are forked from a fork server that has imported the pipeline and run it once
+(`analysis_warmup`), and imported litellm when the analyzer uses an LLM, so a new worker starts
+in tens of milliseconds with its caches warm. As with any multiprocessing start method but
+`fork`, a script that builds the app must guard its entry point (`if __name__ == "__main__"`),
+since each worker imports the main module.
+Workers exit on their own within a second of the app's process dying, however it died.
+Fails: `Busy` when full; `Unavailable` when a worker died (the pool is replaced; the next call
+runs on fresh workers); whatever the job raises (SafeGate errors pickle whole).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+import math
+import multiprocessing
+import os
+import signal
+import threading
+import time
+from collections.abc import Callable
+from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+from typing import Any, ParamSpec, TypeVar
+
+import anyio.to_thread
+
+from app.config import Settings
+from app.domain.errors import Busy, Unavailable
+from app.domain.gate import GatePolicy
+from app.metrics import Metrics
+from app.services.container import Services, TemplateCache, build_analyzer
+from app.store import Repository, create_engine_for
+
+P = ParamSpec("P")
+T = TypeVar("T")
+Job = Callable[..., T]
+
+WARMUP_MODULE = "app.services.analysis_warmup"
+LLM_PRELOAD_MODULE = "app.adapters.llm.preload"
+RETRY_AFTER_MAX_SECONDS = 60
+OWNER_CHECK_SECONDS = 1.0
+_EWMA_WEIGHT = 0.2
+_log = logging.getLogger("safegate.analysis_pool")
+
+
+def default_workers() -> int:
+    """One worker per core this process may run on."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+# The worker side: one `Services` per worker process, built by `_init_worker`.
+_worker_services: Services | None = None
+_worker_templates_version = -1
+
+
+def build_worker_services(settings: Settings) -> Services:
+    """A worker's services: the app's database and analyzer, without migrating or seeding."""
+    engine = create_engine_for(settings.database_url)
+    repository = Repository(engine)
+    return Services(
+        settings=settings,
+        engine=engine,
+        repository=repository,
+        templates=TemplateCache(repository),
+        analyzer=build_analyzer(settings, cache=repository),
+        policy=GatePolicy(theta=settings.theta),
+        metrics=Metrics(),  # the worker's own, unread: the jobs return what the app counts
+    )
+
+
+def _started_at(pid: int) -> str | None:
+    """When a process started (Linux: /proc), to tell it from a later one with its pid."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as stat:
+            return stat.read().rpartition(")")[2].split()[19]
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid: int, started: str | None) -> bool:
+    if started is not None:
+        return _started_at(pid) == started
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _watch_owner(owner: int) -> None:
+    """Exit when the app's process is gone (killed with SIGKILL, say): a worker's queues are
+    shared with its siblings, so it would otherwise wait for work forever, holding its
+    database connections (and the fork server, which lives while any worker does)."""
+    started = _started_at(owner)
+
+    def watch() -> None:
+        while _alive(owner, started):
+            time.sleep(OWNER_CHECK_SECONDS)
+        os._exit(0)
+
+    threading.Thread(target=watch, name="safegate-owner-watch", daemon=True).start()
+
+
+def _init_worker(settings: Settings, templates_version: int, owner: int) -> None:
+    global _worker_services, _worker_templates_version
+    # The app's process owns the workers' lifetime; Ctrl-C reaches the whole process group.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _watch_owner(owner)
+    if settings.gate_worker_nice:
+        os.nice(settings.gate_worker_nice)
+    _worker_services = build_worker_services(settings)
+    _worker_templates_version = templates_version
+
+
+def _run_job(templates_version: int, job: Job[T], args: tuple[Any, ...]) -> tuple[T, float]:
+    global _worker_templates_version
+    services = _worker_services
+    if services is None:  # pragma: no cover - the initializer always ran
+        raise Unavailable("the analysis worker was not initialised")
+    if templates_version != _worker_templates_version:
+        services.templates.refresh()
+        _worker_templates_version = templates_version
+    started = time.perf_counter()
+    result = job(services, *args)
+    return result, time.perf_counter() - started
+
+
+def _ready() -> int:
+    return os.getpid()
+
+
+class AnalysisPool:
+    """Worker processes for Stages 1-5, with a bounded queue in front of them."""
+
+    def __init__(self, settings: Settings, templates: TemplateCache) -> None:
+        self.settings = settings
+        self.workers = settings.gate_workers or default_workers()
+        self.capacity = self.workers + settings.gate_queue
+        self._templates = templates
+        self._in_flight = 0
+        self._job_seconds = 0.05
+        self._executor = self._new_executor()
+
+    @property
+    def in_flight(self) -> int:
+        """Jobs running or waiting in the pool."""
+        return self._in_flight
+
+    def _new_executor(self) -> ProcessPoolExecutor:
+        context = multiprocessing.get_context("forkserver")
+        preload = ["app.main", WARMUP_MODULE]
+        if self.settings.analyzer != "symbolic":
+            preload.append(LLM_PRELOAD_MODULE)
+        # Read when the fork server starts (the first pool of the process), ignored after.
+        context.set_forkserver_preload(preload)
+        return ProcessPoolExecutor(
+            max_workers=self.workers,
+            mp_context=context,
+            initializer=_init_worker,
+            initargs=(self.settings, self._templates.version, os.getpid()),
+        )
+
+    async def start(self) -> None:
+        """Start every worker now (not on the first request) and wait until each answers.
+
+        Workers are spawned as jobs arrive and no worker is idle; one no-op per worker,
+        submitted together, starts them all. Submitting blocks while the fork server starts,
+        so it happens in a thread.
+        """
+        executor = self._executor
+        futures = await anyio.to_thread.run_sync(
+            lambda: [executor.submit(_ready) for _ in range(self.workers)])
+        await asyncio.gather(*(asyncio.wrap_future(f) for f in futures))
+
+    def retry_after(self) -> int:
+        """Seconds until the queue has likely drained enough to take a new job."""
+        seconds = self._job_seconds * max(1, self._in_flight) / self.workers
+        return max(1, min(RETRY_AFTER_MAX_SECONDS, math.ceil(seconds)))
+
+    async def run(self, job: Callable[..., T], *args: Any) -> T:
+        """Run `job(services, *args)` in a worker and return its result.
+
+        Raises:
+            Busy: the workers are busy and the queue is full.
+            Unavailable: a worker died while the job waited or ran.
+        """
+        if self._in_flight >= self.capacity:
+            raise Busy(
+                f"the gate is busy: {self.workers} analysis workers and a queue of "
+                f"{self.settings.gate_queue} are full; retry after {self.retry_after()} s",
+                retry_after=self.retry_after())
+        executor = self._executor
+        try:
+            future: Future[tuple[T, float]] = executor.submit(
+                _run_job, self._templates.version, job, args)
+        except BrokenProcessPool as error:
+            self._replace(executor)
+            raise Unavailable("an analysis worker stopped; retry") from error
+        self._in_flight += 1
+        waiting = asyncio.wrap_future(future)
+        waiting.add_done_callback(self._finished)
+        try:
+            result, _ = await asyncio.shield(waiting)
+        except BrokenProcessPool as error:
+            self._replace(executor)
+            raise Unavailable("an analysis worker stopped while deciding; retry") from error
+        return result
+
+    def _finished(self, done: asyncio.Future[tuple[Any, float]]) -> None:
+        self._in_flight -= 1
+        if done.cancelled() or done.exception() is not None:
+            return
+        _, seconds = done.result()
+        self._job_seconds += _EWMA_WEIGHT * (seconds - self._job_seconds)
+
+    def _replace(self, broken: ProcessPoolExecutor) -> None:
+        if self._executor is broken:
+            _log.error("an analysis worker died; starting a new pool")
+            broken.shutdown(wait=False, cancel_futures=True)
+            self._executor = self._new_executor()
+
+    def close(self) -> None:
+        """Stop the workers (jobs still queued are cancelled; running ones finish)."""
+        self._executor.shutdown(wait=True, cancel_futures=True)
