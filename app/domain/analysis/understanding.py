@@ -222,7 +222,9 @@ def _leave_as_is(clause: Clause) -> bool:
 def _ambiguities(grounded: list[Grounded], scene: WorldState) -> list[UnknownFact]:
     found: list[UnknownFact] = []
     for item in grounded:
-        for ref in (*item.objects, item.recipient, item.destination, item.source):
+        # "turn off the stove" with four burners: switching every one off is the safe reading
+        objects = () if item.schema == "switch_off" and not item.clause.negated else item.objects
+        for ref in (*objects, item.recipient, item.destination, item.source):
             if ref is not None and not ref.ids and len(ref.candidates) > 1:
                 found.append(which_one(ref.phrase.text, list(ref.candidates), scene))
     return found

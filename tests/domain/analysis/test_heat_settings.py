@@ -95,3 +95,11 @@ def test_an_iron_kept_on_while_the_speaker_is_out_is_rejected(gate: Gate) -> Non
 def test_a_speaker_going_out_changes_nothing_for_a_harmless_task(gate: Gate) -> None:
     decision = gate(request("Put the cup in the sink, I'm off to work.", _kitchen()))
     assert decision.decision is Decision.AUTHORIZE, decision.reason
+
+
+def test_switching_off_one_of_several_burners_switches_them_all_off(gate: Gate) -> None:
+    scene = _kitchen()
+    scene["objects"] += [{"id": "burner_2", "type": "StoveBurner", "room": "kitchen",
+                          "properties": {"on": True}}]
+    decision = gate(request("Turn off the burner.", scene))
+    assert decision.decision is Decision.AUTHORIZE, decision.reason
