@@ -249,15 +249,7 @@ class Monitor:
         except PlanError:
             predicted = self.state  # the observation alone must then tell what changed
         state = self._observe(predicted, message)
-        aborts, invariants = self.contract.aborts, self.contract.invariants
-        failure = first_failure(aborts, state, None, must_be=False)
-        self._aborts_clear = state if failure is None else None
-        failure = failure or first_failure(invariants, state, None, must_be=True)
-        counters = self.counters
-        counters.states_checked += 1
-        counters.aborts_checked += len(aborts)
-        counters.invariants_checked += len(invariants)
-        self.state, self._pending, self._last_seq = state, None, seq
+        failure = self._settle(state, seq)
         if failure is not None:
             return self._halt(failure, action.to_wire(), seq, "after")
         return Verdict("allow", seq)
@@ -290,6 +282,15 @@ class Monitor:
             with contextlib.suppress(PlanError):  # else the observation alone tells
                 state = step(state, action)
         state = self._observe(state, message)
+        failure = self._settle(state, seq)
+        self._sync_reason = None
+        if failure is not None:
+            return self._halt(failure, {} if action is None else action.to_wire(), seq, "sync")
+        return Verdict("allow", seq)
+
+    def _settle(self, state: WorldState, seq: int) -> Failure | None:
+        """Check the aborts and the invariants in the state an action (or a sync) left, and go
+        on from that state as the last finished action `seq`; the first condition it breaks."""
         aborts, invariants = self.contract.aborts, self.contract.invariants
         failure = first_failure(aborts, state, None, must_be=False)
         self._aborts_clear = state if failure is None else None
@@ -299,10 +300,7 @@ class Monitor:
         counters.aborts_checked += len(aborts)
         counters.invariants_checked += len(invariants)
         self.state, self._pending, self._last_seq = state, None, seq
-        self._sync_reason = None
-        if failure is not None:
-            return self._halt(failure, {} if action is None else action.to_wire(), seq, "sync")
-        return Verdict("allow", seq)
+        return failure
 
     def _halt(self, failure: Failure, action: Mapping[str, Any], seq: int,
               phase: MessageType) -> Verdict:
