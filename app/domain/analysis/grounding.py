@@ -61,6 +61,9 @@ class Gap:
     why: str
 
 
+_CLAUSE_MARKERS = frozenset({"that", "which", "who", "whom", "whose", "where", "when", "you",
+                             "i", "he", "she", "we", "they", "it", "is", "are", "was", "were",
+                             "has", "have", "had", "will", "would", "can", "could"})
 _EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
@@ -187,7 +190,7 @@ class Grounder:
             phrase.phrase] not in ("bathroom", "hallway", "garden")
         if room is not None and (named_room or not self._object_matches(phrase)):
             return Referent(phrase, "room", (room,))
-        return self._object(phrase)
+        return self._object(phrase, place=place)
 
     def room(self, phrase: NounPhrase) -> str | None:
         """The room a phrase names (a layout room, or a room word the layout lacks)."""
@@ -360,7 +363,7 @@ class Grounder:
         values = (self._base.value(s, (object_id,)) for s in _SIGNATURE)
         return tuple("?" if isinstance(v, Unknown) else str(v) for v in values)
 
-    def _object(self, phrase: NounPhrase) -> Referent:
+    def _object(self, phrase: NounPhrase, *, place: bool = False) -> Referent:
         ids = self._narrow(self._object_matches(phrase), phrase)
         if ids:
             ids.sort()
@@ -376,7 +379,7 @@ class Grounder:
             self.named_objects += [i for i in chosen if i not in self.named_objects]
             self._annotate(chosen, phrase)
             return Referent(phrase, "object", chosen, tuple(ids[:MAX_GROUP]))
-        return self._new_object(phrase)
+        return self._new_object(phrase, place=place)
 
     def remember(self, text: str) -> None:
         """Note what a remark names ("the iron's still on - switch it off"): scene things only,
@@ -405,14 +408,17 @@ class Grounder:
             self.stated[object_id] = {"elevated": bool(high)}
         self._base = self._base.evolve(objects=self.objects, version=self._base.version)
 
-    def _new_object(self, phrase: NounPhrase) -> Referent:
+    def _new_object(self, phrase: NounPhrase, *, place: bool = False) -> Referent:
+        # A thing to handle must be named by a noun for a physical thing ("the full volume" is
+        # none); a place only needs to be a word ("the bedside", "each end").
         head = singular(phrase.head) if phrase.head else ""
-        liquid = bool(head) and substance_trait(head, "liquid") is True and not phrase.contents
-        known = (concept_of(phrase.phrase) is not None or type_info(phrase.phrase).known
-                 or substance_trait(head, "food") is not None)
-        if not head or not (known or self.lexicon.is_english(head)):
+        thing = self._thing_named(phrase)
+        if thing is not None:
+            phrase, head = thing, singular(thing.head)
+        elif not place or not head or not self.lexicon.is_english(head):
             self.gaps.append(Gap(phrase.text, "no object, person or place of that name"))
             return Referent(phrase, "none")
+        liquid = substance_trait(head, "liquid") is True and not phrase.contents
         properties: dict[str, object] = {"contents": phrase.contents} if phrase.contents else {}
         kind = phrase.phrase
         if liquid:
@@ -427,6 +433,29 @@ class Grounder:
         self._annotate((object_id,), phrase)
         return Referent(phrase, "object", (object_id,), new=True,
                         substance=head if liquid else None)
+
+    def _thing_named(self, phrase: NounPhrase) -> NounPhrase | None:
+        """The phrase as the name of a thing the scene lacks, or None when no word of it names
+        a physical thing ("the full volume", "it turn"). Words after the thing's noun are
+        dropped ("the candles unlit" is candles)."""
+        words = phrase.words
+        # "every mug you find", "the gate is latched", "the lights that are on": what follows
+        # a relative word, a subject pronoun or a copula says something of the thing.
+        cut = next((i for i, w in enumerate(words) if i and w in _CLAUSE_MARKERS), len(words))
+        if cut < len(words):
+            words = words[:cut]
+            phrase = replace(phrase, head=words[-1], modifiers=words[:-1])
+        for end in range(len(words), 0, -1):
+            head = singular(words[end - 1])
+            named = " ".join(words[:end])
+            if (concept_of(named) is not None or type_info(named).known
+                    or substance_trait(head, "food") is not None or self.lexicon.is_thing(head)
+                    or head.endswith("able")):  # "the flammables", "her valuables"
+                return phrase if end == len(words) else replace(
+                    phrase, head=words[end - 1], modifiers=words[:end - 1])
+            if self.lexicon.is_verb(words[end - 1]):
+                return None  # "the chili simmering": a state said of it, not a thing's name
+        return None
 
     def _room_named_in(self, phrase: NounPhrase) -> str | None:
         """ "the living room lamps", "the kitchen bin": a layout room named before the head

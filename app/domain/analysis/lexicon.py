@@ -1,10 +1,11 @@
 """The reader's vocabulary, loaded once: verbs by schema, people words, rooms, closed classes.
 
-In: the knowledge files (`knowledge/verbs.yaml`, `words.yaml`, `english_words.json`) and the
+In: the knowledge files (`knowledge/verbs.yaml`, `words.yaml`, `english_words.json`,
+`thing_nouns.json`) and the
 world's people words (`app/domain/world/data/people.json`). Out: a `Lexicon` with look-ups
 the reader needs: the verb schemas a (phrasal) verb may name, a word's verb lemma, whether a
-word is English, person words with the age group and gender they imply, room words, and the
-manner phrases.
+word is English, whether a noun names a physical thing, person words with the age group and
+gender they imply, room words, and the manner phrases.
 Fails: at load, `FileNotFoundError`/`KeyError` on missing or malformed knowledge; look-ups never.
 """
 
@@ -62,6 +63,11 @@ class Lexicon:
     verb_starts: frozenset[str]
     """The first word of every verb phrase a schema lists ("turn" for "turn on")."""
     english: frozenset[str]
+    things: frozenset[str]
+    """Nouns whose usual sense is a physical thing or a message (WordNet): what a made-up
+    object may be."""
+    measures: frozenset[str]
+    """Nouns of an amount ("spoonful", "ml"): "a spoonful of sugar" is sugar."""
     verbs: frozenset[str]
     fillers: tuple[tuple[str, ...], ...]
     negations: tuple[tuple[str, ...], ...]
@@ -111,6 +117,12 @@ class Lexicon:
         return (word in self.english or self.lemma(word) in self.english
                 or word.rstrip("s") in self.english or word in self.people or word.isdigit())
 
+    def is_thing(self, word: str) -> bool:
+        """Whether the noun (singular or plural, possessive stripped) names a physical thing."""
+        word = word.split("'")[0].split("-")[-1]
+        return word in self.things or (word.endswith("s") and (
+            word[:-1] in self.things or (word.endswith("es") and word[:-2] in self.things)))
+
 
 def _phrases(items: list[str]) -> tuple[tuple[str, ...], ...]:
     """Phrases as word tuples, longest first (so "could you please" wins over "could you")."""
@@ -146,6 +158,7 @@ def load_lexicon() -> Lexicon:
             schemas.setdefault(phrase, []).append(schema)
     words = _read("words.yaml")
     english = _read("english_words.json")
+    nouns = _read("thing_nouns.json")
     people, states = _people(people_table())
     rooms = {phrase: room for room, phrases in words["rooms"].items() for phrase in phrases}
     return Lexicon(
@@ -154,6 +167,8 @@ def load_lexicon() -> Lexicon:
         verb_starts=frozenset(k.split()[0] for k in schemas),
         english=frozenset(english["words"]) | frozenset(english["inflections"])
         | frozenset(words["function_words"]),
+        things=frozenset(nouns["nouns"]) | frozenset(nouns["measures"]),
+        measures=frozenset(nouns["measures"]),
         verbs=frozenset(english["verbs"]) | frozenset(k for k in schemas if " " not in k),
         fillers=_phrases(words["fillers"]),
         negations=_phrases(words["negations"]),

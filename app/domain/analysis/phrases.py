@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from app.domain.analysis.lexicon import Lexicon
+from app.domain.world.concepts import singular
 
 OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "one", "ones",
                              "everything", "something", "anything", "stuff", "things", "what",
@@ -141,8 +142,12 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
             words = after  # "two of grandad's pills", "some of the cake": the pills, the cake
             if before[-1] in lexicon.numbers:
                 quantity = lexicon.numbers[before[-1]]
-        elif before and (before[-1] in _PARTITIVES or before[-1] in _PARTS):
-            words = after  # "a slice of cake" is cake; "the end of the counter" is the counter
+        elif before and after and (before[-1] in _PARTITIVES or before[-1] in _PARTS
+                                   or singular(before[-1]) in lexicon.measures
+                                   or not lexicon.is_thing(before[-1])):
+            # "a slice of cake" is cake; "the end of the counter" is the counter; "a stack of
+            # boxes" or "a squeeze of lemon" (a measure, not a thing) is the boxes, the lemon.
+            words = after
         elif before and after:
             words, contents = before, " ".join(after)  # "a glass of water"
         else:
