@@ -121,11 +121,20 @@ _YOUNG_ROLES = frozenset({"baby", "babies", "infant", "newborn", "toddler", "tod
                           "little one", "little ones", "crawling baby", "bub"})
 
 
+def _age_in_years(person: PersonState) -> float | None:
+    """The person's age when the scene gives it as `age`/`age_years` or `age_months`."""
+    for key, per_year in (("age", 1), ("age_years", 1), ("age_months", 12)):
+        value = person.properties.get(key)
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            return float(value) / per_year
+    return None
+
+
 @_rule("toddler")
 def _toddler(state: WorldState, args: tuple[str, ...]) -> FactValue:
     person = state.people[args[0]]
-    age = person.properties.get("age")
-    if isinstance(age, int | float) and not isinstance(age, bool):
+    age = _age_in_years(person)
+    if age is not None:
         return age < 4
     group = _attribute(person, "age_group")
     if group == "infant":

@@ -17,7 +17,7 @@ from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.concepts import concept_of
 from app.domain.world.entities import ObjectState
 from app.domain.world.object_types import TypeInfo, normalize_type
-from app.domain.world.substances import is_empty, same_substance, substance_trait
+from app.domain.world.substances import bite_sized, is_empty, same_substance, substance_trait
 
 if TYPE_CHECKING:
     from app.domain.world.state import WorldState
@@ -372,6 +372,9 @@ def _small(state: WorldState, args: tuple[str, ...]) -> FactValue:
         return stated
     if obj.kind.trait("small"):
         return True
+    contents = object_contents(obj)
+    if isinstance(contents, str) and contents and bite_sized(contents):
+        return True  # a bowl of whole grapes hands a child pieces of choking size
     size = obj.kind.size_m
     if size is not None and obj.kind.known:
         if size[0] <= 0.057 and size[1] <= 0.032:

@@ -137,6 +137,30 @@ def substance_trait(contents: str, trait: str) -> bool | None:
     return None if traits is None else trait in traits
 
 
+# Foods that block a young child's airway when given whole (the paediatric choking lists:
+# grapes, nuts, popcorn, hard sweets, cherry tomatoes, sausage rounds), and the preparations
+# that make them safe to give, or turn them into something else (peanut butter, grape juice).
+_BITE_SIZED = frozenset({"grape", "grapes", "nut", "nuts", "peanut", "peanuts", "almond",
+                         "almonds", "cashew", "cashews", "hazelnut", "hazelnuts", "walnut",
+                         "walnuts", "pistachio", "pistachios", "popcorn", "sweet", "sweets",
+                         "candy", "candies", "lolly", "lollies", "gobstopper", "gobstoppers",
+                         "marshmallow", "marshmallows", "cherry", "cherries", "olive", "olives",
+                         "blueberry", "blueberries", "cherry_tomato", "cherry_tomatoes",
+                         "sausage", "sausages", "hotdog", "hot_dog", "raisin", "raisins"})
+_MADE_SAFE = frozenset({"halved", "quartered", "chopped", "mashed", "cut", "sliced", "pureed",
+                        "puréed", "blended", "grated", "crushed", "ground", "butter", "juice",
+                        "paste", "spread", "oil", "milk", "flour", "sauce", "soup", "puree"})
+
+
+def bite_sized(text: str) -> bool:
+    """Whether the text names a food a young child can choke on as given ("whole grapes",
+    "peanuts"), not one cut up or made into something else ("halved grapes", "peanut butter")."""
+    words = {w for w in _SPLIT.split(text.lower()) if w}
+    joined = normalize(text)
+    named = bool(words & _BITE_SIZED) or any(f in joined for f in _BITE_SIZED if "_" in f)
+    return named and not words & _MADE_SAFE
+
+
 def same_substance(named: str, contents: str) -> bool:
     """Whether `contents` is, or contains, the substance `named` (or a member of its family)."""
     wanted = _singular(normalize(named))
