@@ -31,6 +31,7 @@ _DESTINATION = frozenset({
     "in front of", "against", "toward", "towards", "over to", "up to", "down to", "out to",
     "upstairs to", "downstairs to", "across", "through", "around", "round", "along", "between",
     "behind", "below", "beneath", "up", "down"})
+_OUT_OF_REACH = NounPhrase("a high shelf", head="shelf", modifiers=("high",))
 _SOURCE = frozenset({"from", "off", "out of", "away from"})
 _WET_CLEANING = frozenset({"wash", "rinse", "scrub", "mop up", "wash up", "rinse out", "scour",
                            "disinfect", "descale", "degrease", "clean out"})
@@ -150,6 +151,10 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         if prep in _ALONG_WITH and clause.schemas[:1] in (("fetch",), ("give",), ("pick",)) \
                 and not _names_person(people, np):
             objects.append(g.any(np))  # "take grandad a whisky with his tablets": both go
+            continue
+        if prep in ("out of", "beyond") and np.head == "reach" and grounded.destination is None:
+            # "out of his reach": somewhere high, which is where things go to be kept from people
+            grounded.destination = g.any(_OUT_OF_REACH, place=True)
             continue
         if prep in _SOURCE and grounded.source is None:
             grounded.source = g.any(np, place=True)

@@ -309,6 +309,7 @@ _flag_rule("electrical", lambda k: k.trait("electrical"))
 _flag_rule("heat_source", lambda k: k.flag("heat_source"))
 _flag_rule("pickupable", lambda k: k.flag("pickupable"))
 _flag_rule("walking_aid", lambda k: k.trait("walking_aid"))
+_flag_rule("personal_aid", lambda k: k.trait("personal_aid") or k.trait("walking_aid"))
 _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
 # Things are dry and whole unless the scene says otherwise or an effect (a spill, a fall)
 # makes them so: a wet or broken object is something a caller would mention.

@@ -64,6 +64,13 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
         "Walker": True, "Cane": True, "Crutch": True, "Crutches": True, "Wheelchair": True,
         "Rollator": True, "WalkingStick": True, "WalkingFrame": True,
     },
+    # What a person relies on to see, hear, move or call for help.
+    "personal_aid": {
+        "Glasses": True, "HearingAid": True, "Dentures": True, "CallButton": True,
+        "CallBell": True, "AlarmPendant": True, "Walker": True, "Cane": True, "Crutch": True,
+        "Crutches": True, "Wheelchair": True, "Rollator": True, "WalkingStick": True,
+        "WalkingFrame": True,
+    },
     "safety_barrier": {
         "BabyGate": True, "SafetyGate": True, "StairGate": True, "StoveGuard": True,
         "FireGuard": True, "BedRail": True, "Railing": True, "ChildLock": True,
@@ -91,14 +98,15 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
 _CONCEPT_TRAITS = {
     "sharp": "sharp", "electrical": "electrical", "toxic": "toxic", "flammable": "flammable",
     "medication": "medication", "walking_aid": "walking_aid", "safety_barrier": "safety_barrier",
-    "small": "small", "personal": "valuable", "sentimental": "valuable", "food": "food",
-    "metal": "metal", "heavy": "heavy", "ignition": "ignition", "camera": "camera",
+    "personal_aid": "personal_aid", "small": "small", "personal": "valuable",
+    "sentimental": "valuable", "food": "food", "metal": "metal", "heavy": "heavy", "ignition": "ignition", "camera": "camera",
     "water_source": "water_source", "toy": "toy", "noisy": "noisy",
 }
-_RARE_TRAITS = ("walking_aid", "safety_barrier", "medication", "valuable", "water_source")
+_RARE_TRAITS = ("walking_aid", "personal_aid", "safety_barrier", "medication", "valuable",
+                "water_source")
 _LISTED_TRAITS = frozenset({"sharp", "electrical", "toxic", "flammable", "medication",
-                            "walking_aid", "safety_barrier", "small", "valuable", "food",
-                            "metal", "heavy", "water_source"})
+                            "walking_aid", "personal_aid", "safety_barrier", "small",
+                            "valuable", "food", "metal", "heavy", "water_source"})
 _CONCEPT_FLAGS = {"heat_source": "heat_source", "fragile": "breakable", "container": "receptacle"}
 
 # Types outside AI2-THOR that requests commonly name, with the capabilities they surely have.
