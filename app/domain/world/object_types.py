@@ -99,8 +99,9 @@ _CONCEPT_TRAITS = {
     "sharp": "sharp", "electrical": "electrical", "toxic": "toxic", "flammable": "flammable",
     "medication": "medication", "walking_aid": "walking_aid", "safety_barrier": "safety_barrier",
     "personal_aid": "personal_aid", "small": "small", "personal": "valuable",
-    "sentimental": "valuable", "food": "food", "metal": "metal", "heavy": "heavy", "ignition": "ignition", "camera": "camera",
-    "water_source": "water_source", "toy": "toy", "noisy": "noisy",
+    "sentimental": "valuable", "food": "food", "metal": "metal", "heavy": "heavy",
+    "ignition": "ignition", "camera": "camera", "water_source": "water_source", "toy": "toy",
+    "noisy": "noisy",
 }
 _RARE_TRAITS = ("walking_aid", "personal_aid", "safety_barrier", "medication", "valuable",
                 "water_source")
