@@ -557,12 +557,16 @@ class Reader:
             if rewritten is not None:
                 verb, object_words = rewritten
         complement: str | None = None
-        if object_words and object_words[-1] in _COMPLEMENTS and len(object_words) > 1:
+        if verb in ("leave", "keep"):
+            object_words, complement = _kept_state(object_words)
+        if complement is None and object_words and object_words[-1] in _COMPLEMENTS and len(
+                object_words) > 1:
             complement = object_words.pop()
             if len(object_words) > 1 and object_words[-1] in _STATE_PARTICIPLES:
                 object_words.pop()
-        elif object_words and object_words[-1] in _STATE_PARTICIPLES and chunks[1:2] and \
-                chunks[1][0] in ("on", "off", "in") and not [w for w in chunks[1][1] if w != ","]:
+        elif complement is None and object_words and object_words[-1] in _STATE_PARTICIPLES \
+                and chunks[1:2] and chunks[1][0] in ("on", "off", "in") and not [
+                    w for w in chunks[1][1] if w != ","]:
             object_words.pop()  # "the iron switched on, on the board": "on" then a place
             complement = chunks.pop(1)[0]
         second: NounPhrase | None = None
@@ -619,3 +623,22 @@ class Reader:
                            or len(rest) <= 3):
                 return head, rest
         return None, words
+
+
+_WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "until", "for",
+                   "while", "when", "after", "before", "then", "now"})
+
+
+def _kept_state(words: list[str]) -> tuple[list[str], str | None]:
+    """What "leave/keep X <state>" keeps, when the state is followed only by a time or a
+    comma ("leave it open tonight", "keep the door shut, the dog gets out")."""
+    at = next((i for i, w in enumerate(words) if i and w in _COMPLEMENTS), None)
+    if at is None or at == len(words) - 1:
+        return words, None
+    after = words[at + 1:]
+    if after[0] == ",":
+        return words[:at] + after, words[at]
+    if after[0] in _WHEN:
+        return words[:at], words[at]
+    return words, None
+

@@ -67,6 +67,7 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("in_path", "the object lies on a walkway, stair or doorway people use"),
     _object_flag("blocks_exit", "the object blocks a door, exit or escape route"),
     _object_flag("walking_aid", "the object is a walking aid (walker, cane, crutches, wheelchair)"),
+    _object_flag("exterior", "the door, gate or window opens to the outside"),
     _object_flag("personal_aid", "the object is what a person relies on to see, hear, move or "
                  "call for help (glasses, hearing aid, walking aid, call button)"),
     _object_flag("safety_barrier", "the object is a safety barrier (baby gate, guard, rail, lock)"),

@@ -10,6 +10,7 @@ Fails: never.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -311,6 +312,23 @@ _flag_rule("pickupable", lambda k: k.flag("pickupable"))
 _flag_rule("walking_aid", lambda k: k.trait("walking_aid"))
 _flag_rule("personal_aid", lambda k: k.trait("personal_aid") or k.trait("walking_aid"))
 _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
+
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
+_OUTSIDE_WORDS = frozenset({"front", "back", "garden", "patio", "porch", "exterior", "outside",
+                            "outer", "entrance", "street", "yard", "garage", "gate", "exit"})
+
+
+@_rule("exterior")
+def _exterior(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # An outside door says so by a property or by its name ("the front door", "patio_door_1");
+    # a door nobody describes is taken to be inside the home.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "exterior", "exterior", "outside", "external")
+    if stated is not None:
+        return stated
+    words = set(re.split(r"[^a-z]+", " ".join(
+        (obj.id, obj.name or "", _CAMEL.sub(" ", obj.type))).lower()))
+    return bool(words & _OUTSIDE_WORDS)
 # Things are dry and whole unless the scene says otherwise or an effect (a spill, a fall)
 # makes them so: a wet or broken object is something a caller would mention.
 _flag_rule("wet", lambda k: False)
