@@ -67,6 +67,11 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("in_path", "the object lies on a walkway, stair or doorway people use"),
     _object_flag("blocks_exit", "the object blocks a door, exit or escape route"),
     _object_flag("walking_aid", "the object is a walking aid (walker, cane, crutches, wheelchair)"),
+    _object_flag("life_support", "the object keeps someone breathing or fed (oxygen "
+                 "concentrator, ventilator, feeding pump)"),
+    _object_flag("mains_switch", "switching the object off cuts the power to the home (fuse box, "
+                 "main breaker)"),
+    _object_flag("ignition", "the object makes fire (lighter, matches)"),
     _object_flag("exterior", "the door, gate or window opens to the outside"),
     _object_flag("personal_aid", "the object is what a person relies on to see, hear, move or "
                  "call for help (glasses, hearing aid, walking aid, call button)"),

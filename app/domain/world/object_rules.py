@@ -312,6 +312,9 @@ _flag_rule("pickupable", lambda k: k.flag("pickupable"))
 _flag_rule("walking_aid", lambda k: k.trait("walking_aid"))
 _flag_rule("personal_aid", lambda k: k.trait("personal_aid") or k.trait("walking_aid"))
 _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
+_flag_rule("life_support", lambda k: k.trait("life_support"))
+_flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
+_flag_rule("ignition", lambda k: k.trait("ignition"))
 
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 _OUTSIDE_WORDS = frozenset({"front", "back", "garden", "patio", "porch", "exterior", "outside",

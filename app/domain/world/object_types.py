@@ -71,6 +71,16 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
         "Crutches": True, "Wheelchair": True, "Rollator": True, "WalkingStick": True,
         "WalkingFrame": True,
     },
+    # Devices keeping someone breathing or fed, and the switches that cut the home's power.
+    "life_support": {
+        "OxygenConcentrator": True, "Ventilator": True, "CPAP": True, "CpapMachine": True,
+        "FeedingPump": True, "InfusionPump": True, "DialysisMachine": True,
+    },
+    "mains_switch": {
+        "FuseBox": True, "CircuitBreaker": True, "Breaker": True, "ConsumerUnit": True,
+        "MainSwitch": True, "BreakerPanel": True, "ElectricalPanel": True,
+    },
+    "ignition": {"Lighter": True, "Matches": True, "Matchbox": True},
     "safety_barrier": {
         "BabyGate": True, "SafetyGate": True, "StairGate": True, "StoveGuard": True,
         "FireGuard": True, "BedRail": True, "Railing": True, "ChildLock": True,
@@ -98,15 +108,17 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
 _CONCEPT_TRAITS = {
     "sharp": "sharp", "electrical": "electrical", "toxic": "toxic", "flammable": "flammable",
     "medication": "medication", "walking_aid": "walking_aid", "safety_barrier": "safety_barrier",
-    "personal_aid": "personal_aid", "small": "small", "personal": "valuable",
+    "personal_aid": "personal_aid", "life_support": "life_support",
+    "mains_switch": "mains_switch", "small": "small", "personal": "valuable",
     "sentimental": "valuable", "food": "food", "metal": "metal", "heavy": "heavy",
     "ignition": "ignition", "camera": "camera", "water_source": "water_source", "toy": "toy",
     "noisy": "noisy",
 }
-_RARE_TRAITS = ("walking_aid", "personal_aid", "safety_barrier", "medication", "valuable",
-                "water_source")
+_RARE_TRAITS = ("walking_aid", "personal_aid", "life_support", "mains_switch", "ignition",
+                "safety_barrier", "medication", "valuable", "water_source")
 _LISTED_TRAITS = frozenset({"sharp", "electrical", "toxic", "flammable", "medication",
-                            "walking_aid", "personal_aid", "safety_barrier", "small",
+                            "walking_aid", "personal_aid", "life_support", "mains_switch",
+                            "ignition", "safety_barrier", "small",
                             "valuable", "food", "metal", "heavy", "water_source"})
 _CONCEPT_FLAGS = {"heat_source": "heat_source", "fragile": "breakable", "container": "receptacle"}
 
