@@ -88,6 +88,7 @@ class _Search:
         self.contract = CompiledContract(task.contract) if task.contract else None
         self.throwing = goal.throwing
         self.max_speed = task.state.robot.max_speed or CAUTIOUS_SPEED
+        self.blockers: dict[str, int] = {}
 
     def objects_key(self, state: WorldState) -> tuple[Any, ...]:
         """What the search distinguishes about the objects and people."""
@@ -157,12 +158,24 @@ class _Search:
         contract = self.contract
         if contract is None:
             return True
-        return (first_failure(contract.guards_for(action.name), before, action.args,
-                              must_be=True) is None
-                and first_failure(contract.aborts, after, None, must_be=False) is None
-                and first_failure(contract.invariants, after, None, must_be=True) is None
-                and (contract.scope is None
-                     or contract.scope.departure(action, before, 0) is None))
+        failure = (first_failure(contract.guards_for(action.name), before, action.args,
+                                 must_be=True)
+                   or first_failure(contract.aborts, after, None, must_be=False)
+                   or first_failure(contract.invariants, after, None, must_be=True))
+        if failure is not None:
+            if not failure.established:
+                blocker = (f"{failure.compiled.condition.id} (unknown: "
+                           f"{', '.join(failure.unknown_facts) or '?'})")
+                self.blockers[blocker] = self.blockers.get(blocker, 0) + 1
+            return False
+        return contract.scope is None or contract.scope.departure(action, before, 0) is None
+
+    def blocked_by(self) -> str:
+        """The condition whose unknown facts stopped the search most often, in words."""
+        if not self.blockers:
+            return ""
+        blocker = max(self.blockers, key=lambda b: self.blockers[b])
+        return f"; most often stopped by {blocker}: the request does not give those facts"
 
     def finished(self, state: WorldState) -> bool:
         """Whether the task may end here: the goal holds and so do the guards on `Finish`."""
@@ -253,7 +266,7 @@ def search(task: PlanningTask, goal: Goal, *, max_expansions: int = MAX_EXPANSIO
                                       (*plan, action.to_wire())))
     why = "search space exhausted" if not frontier else f"gave up after {expanded} expansions"
     if run.contract is not None:
-        why += " (no plan reaches the goal within the contract)"
+        why += " (no plan reaches the goal within the contract" + run.blocked_by() + ")"
     return PlanOutcome(None, why, formula, expanded)
 
 
