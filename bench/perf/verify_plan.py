@@ -10,6 +10,10 @@ plan that fetches and puts away objects in a loop, every step's preconditions sa
 Out: a Rich table per plan length: median, p90, per-step cost and Z3 calls; the target is a
 median of <= 50 ms for 50 steps, and the per-step cost should stay about flat (linear growth).
 Every plan must pass; a failing one means the benchmark measures the wrong thing (exit 1).
+Then, in the same run, the same plans with one fault (the put nearest the middle thrown instead,
+which a guard forbids): Stage 5 alone (what a failing /verify cost before repairs, the baseline)
+and Stage 5 followed by the repair search (`app.domain.planning.repair_plan`) as a failing
+/verify now runs it; the repair must be found and must pass Stage 5 again (exit 1 otherwise).
 Run: `.venv/bin/python bench/perf/verify_plan.py`.
 """
 
@@ -25,6 +29,7 @@ from rich.table import Table
 
 from app.domain.contracts import Contract, ContractCondition
 from app.domain.models import ConditionKind, GateRequest
+from app.domain.planning import repair_plan
 from app.domain.scope import ScopeStep, TaskScope
 from app.domain.verify import verify_plan
 from app.domain.world import WorldState, state_from_request
@@ -146,6 +151,57 @@ def build_plan(length: int) -> list[dict[str, Any]]:
     return plan[:length]
 
 
+def failing_plan(plan: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The plan with the put nearest its middle replaced by a throw (a guard forbids throws)."""
+    puts = [i for i, s in enumerate(plan) if s["action"] == "put"]
+    middle = min(puts, key=lambda i: abs(i - len(plan) // 2))
+    return [*plan[:middle], {"action": "ThrowObject", "object": plan[middle]["object"]},
+            *plan[middle + 1:]]
+
+
+def _median_ms(run: Any) -> tuple[float, float]:
+    timings = []
+    for _ in range(SAMPLES):
+        start = time.perf_counter()
+        run()
+        timings.append((time.perf_counter() - start) * 1000)
+    timings.sort()
+    return statistics.median(timings), timings[int(0.9 * (len(timings) - 1))]
+
+
+def failing_table(state: WorldState, contract: Contract, console: Console) -> bool:
+    """Failing plans: Stage 5 alone (the baseline) and Stage 5 with the repair search."""
+    table = Table(title="The same plans with one fault: failing /verify, without and with the "
+                        "repair")
+    for column in ("steps", "verify only: median ms", "verify + repair: median ms", "p90 ms",
+                   "repair", "target"):
+        table.add_column(column)
+    fine = True
+    for length in LENGTHS:
+        plan = failing_plan(build_plan(length))
+        if verify_plan(plan, contract, state, timeout_ms=10_000).ok:
+            console.print(f"the faulty {length}-step plan passes; fix the benchmark")
+            return False
+        repair = repair_plan(plan, contract, state, timeout_ms=10_000)
+        proved = repair.plan is not None and verify_plan(
+            list(repair.plan), contract, state, timeout_ms=10_000).ok
+        fine = fine and proved
+        alone, _ = _median_ms(lambda p=plan: verify_plan(p, contract, state, timeout_ms=10_000))
+
+        def both(p: list[dict[str, Any]] = plan) -> None:
+            verdict = verify_plan(p, contract, state, timeout_ms=10_000)
+            repair_plan(p, contract, state, timeout_ms=10_000, failed=verdict)
+
+        median, p90 = _median_ms(both)
+        edits = ", ".join(e.kind for e in repair.edits) if proved else f"NONE: {repair.reason}"
+        table.add_row(str(length), f"{alone:.1f}", f"{median:.1f}", f"{p90:.1f}", edits,
+                      f"<= {TARGET_MS:.0f}" if length == 50 else "")
+        if length == 50:
+            fine = fine and median <= TARGET_MS
+    console.print(table)
+    return fine
+
+
 def main() -> int:
     state, contract = build_state(), build_contract()
     assert len(contract) == 30
@@ -183,7 +239,10 @@ def main() -> int:
                   f"Python {sys.version.split()[0]}")
     met = medians[50] <= TARGET_MS
     console.print("target met" if met else "TARGET MISSED (50-step median above 50 ms)")
-    return 0
+    repaired = failing_table(state, contract, console)
+    console.print("failing plans: repaired, proved, and within the target" if repaired
+                  else "FAILING PLANS: a repair is missing, unproved or over the target")
+    return 0 if repaired else 1
 
 
 if __name__ == "__main__":
