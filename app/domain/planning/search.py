@@ -42,6 +42,9 @@ CAUTIOUS_SPEED = 0.1
 APPROACH_STANDOFF_M = 0.5
 MAX_EXPANSIONS = 1500
 HEURISTIC_WEIGHT = 2.0
+READING_ORDER_TIEBREAK = 0.001
+PLACES_PER_ROOM = 4
+"""Open surfaces of a goal's room the search may set things down on (sorted by id)."""
 _HEAT_TYPES = ("Microwave", "StoveBurner", "Toaster", "CoffeeMachine")
 
 
@@ -68,9 +71,23 @@ def _supporting(state: WorldState, goal: Goal) -> tuple[set[str], set[str]]:
             parent = state.objects[parent].parent
     controllers = {a for a, rel, b in state.relations if rel == "controls" and b in objects}
     objects |= controllers
+    objects |= _places_in_rooms(state, goal)
     floors = [o.id for o in state.objects.values() if o.type == "Floor"]
     objects -= set(floors)
     return objects, people
+
+
+def _places_in_rooms(state: WorldState, goal: Goal) -> set[str]:
+    """For "take it to the living room": surfaces there to set it down on, not just the floor."""
+    rooms = {lit.args[1] for alt in goal.alternatives for lit in alt
+             if lit.symbol == "in_room" and lit.value and lit.args[0] in state.objects}
+    places: set[str] = set()
+    for room in sorted(rooms):
+        here = sorted(o.id for o in state.objects.values()
+                      if o.kind.flag("receptacle") is True and o.type != "Floor"
+                      and not o.kind.flag("openable") and state.room_of(o.id) == room)
+        places.update(here[:PLACES_PER_ROOM])
+    return places
 
 
 class _Search:
@@ -186,8 +203,10 @@ class _Search:
                                                  FINISH_ARGS, must_be=True) is None
 
     def heuristic(self, state: WorldState) -> float:
-        return min(sum(self._estimate(state, lit) for lit in alt)
-                   for alt in self.goal.alternatives)
+        # Where alternatives cost the same, the one Stage 1 read first (the command's literal
+        # reading: hand it to mum, rather than set it down near her) is found first.
+        return min(sum(self._estimate(state, lit) for lit in alt) + READING_ORDER_TIEBREAK * rank
+                   for rank, alt in enumerate(self.goal.alternatives))
 
     def _acquire(self, state: WorldState, obj: str) -> float:
         if state.robot.holding == obj:
