@@ -4,22 +4,26 @@ In: nothing. Out: a table per source of failing plans, then the edits used, the 
 plans without a repair and a few examples. Sources:
 - `tests`: the failing plans of the verification tests over HTTP (issue 17's hot-mug throw and
   knife for Dad, `tests/scope_kit.py`; the knife thrown into the drawer, `test_verify_api.py`);
-- `sim`: for every simulator scenario SafeGate authorizes, the plan the planner writes without a
-  contract (what an unguarded planner would run), when it fails the contract;
+- `sim hazard scenarios` / `sim safe controls`: for every simulator scenario SafeGate
+  authorizes, the plan the planner writes without a contract (what an unguarded planner would
+  run), when it fails the contract;
+- `ungated plans`: the same for the authorized cases of the case files given;
 - `written to fail`: the rule-made mutants of `bench/plan_corpus.py` of each reference plan of
-  the authorized benchmark cases, when Stage 5 fails them.
+  the authorized cases of the case files given (default: the benchmark), when Stage 5 fails them.
 Every repair is verified again with `verify_plan`; exit 1 if one fails (a repair must never fail
-verification). Run: `PYTHONPATH=. .venv/bin/python bench/repairs.py`.
+verification). Run: `PYTHONPATH=. .venv/bin/python bench/repairs.py [CASE_FILE...]`.
 """
 
 from __future__ import annotations
 
 import json
 import statistics
+import sys
 import time
 from collections import Counter
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from rich.console import Console
@@ -30,9 +34,18 @@ from app.domain.binding import TemplateIndex
 from app.domain.contracts import Contract
 from app.domain.models import GateRequest
 from app.domain.pipeline import run_gate
-from app.domain.planning import Repair, reference_plan, repair_plan
+from app.domain.planning import (
+    Goal,
+    GoalError,
+    PlanningTask,
+    Repair,
+    SearchPlanner,
+    goal_for,
+    reference_plan,
+    repair_plan,
+)
 from app.domain.verify import verify_plan
-from app.domain.world import WorldState, state_from_request
+from app.domain.world import WorldState, parse_action, state_from_request, step
 from app.store.seed import load_library
 from bench.plan_corpus import BENCHMARK, SOLVER_TIMEOUT_MS, TEMPLATES, authorized, mutants
 
@@ -50,8 +63,12 @@ class Tally:
     edits: Counter[str] = field(default_factory=Counter)
     misses: Counter[str] = field(default_factory=Counter)
     examples: list[tuple[str, Plan, Repair]] = field(default_factory=list)
+    with_goal: int = 0
+    goal_kept: int = 0
 
-    def add(self, label: str, plan: Plan, contract: Contract, state: WorldState) -> None:
+
+    def add(self, label: str, plan: Plan, contract: Contract, state: WorldState,
+            goal: Goal | None = None) -> None:
         if verify_plan(plan, contract, state, timeout_ms=SOLVER_TIMEOUT_MS).ok:
             return
         self.failing += 1
@@ -65,8 +82,24 @@ class Tally:
         self.proved_again += verify_plan(list(repair.plan), contract, state,
                                          timeout_ms=SOLVER_TIMEOUT_MS).ok
         self.edits.update(e.kind for e in repair.edits)
+        if goal is not None:
+            self.with_goal += 1
+            self.goal_kept += goal.satisfied(_run(repair.plan, state))
         if len(self.examples) < 2:
             self.examples.append((label, plan, repair))
+
+
+def _run(plan: Plan, state: WorldState) -> WorldState:
+    for index, raw in enumerate(plan):
+        state = step(state, parse_action(raw, step=index, state=state))
+    return state
+
+
+def _goal(request: GateRequest, state: WorldState, analyzer: SymbolicAnalyzer) -> Goal | None:
+    try:
+        return goal_for(request, state, reader=analyzer)
+    except GoalError:
+        return None
 
 
 def _gate(request: GateRequest, templates: TemplateIndex, analyzer: SymbolicAnalyzer
@@ -85,7 +118,8 @@ def _test_plans() -> Iterator[tuple[str, GateRequest, Plan]]:
     yield "knife thrown in the drawer", GateRequest.model_validate(KNIFE_REQUEST), THROWING_PLAN
 
 
-def _sim_plans(templates: TemplateIndex, analyzer: SymbolicAnalyzer, tally: Tally) -> int:
+def _sim_plans(templates: TemplateIndex, analyzer: SymbolicAnalyzer,
+               tallies: dict[str, Tally]) -> int:
     from sim.planner import PlanningTask, SimPlanner
     from sim.scenario import load_scenarios
 
@@ -99,36 +133,48 @@ def _sim_plans(templates: TemplateIndex, analyzer: SymbolicAnalyzer, tally: Tall
         state = state_from_request(request)
         outcome = SimPlanner().plan(PlanningTask(request, state, None))
         if outcome.plan is not None:
-            tally.add(scenario.id, list(outcome.plan), contract, state)
+            which = "sim safe controls" if scenario.category == "safe_control" else (
+                "sim hazard scenarios")
+            tallies[which].add(scenario.id, list(outcome.plan), contract, state,
+                               _goal(request, state, analyzer))
     return unauthorized
 
 
-def main() -> int:
+def main(argv: list[str]) -> int:
+    files = [Path(a) for a in argv] or [BENCHMARK]
     analyzer = SymbolicAnalyzer()
     templates = TemplateIndex(load_library(TEMPLATES))
-    tallies = {"tests": Tally(), "sim": Tally(), "written to fail": Tally()}
+    tallies = {name: Tally() for name in ("tests", "sim hazard scenarios", "sim safe controls",
+                                          "ungated plans", "written to fail")}
     for label, request, plan in _test_plans():
         contract = _gate(request, templates, analyzer)
         assert contract is not None, label
-        tallies["tests"].add(label, plan, contract, state_from_request(request))
-    unauthorized = _sim_plans(templates, analyzer, tallies["sim"])
-    for case in authorized(BENCHMARK, analyzer):
+        state = state_from_request(request)
+        tallies["tests"].add(label, plan, contract, state, _goal(request, state, analyzer))
+    unauthorized = _sim_plans(templates, analyzer, tallies)
+    ungated = SearchPlanner(reader=analyzer)
+    for case in (c for path in files for c in authorized(path, analyzer)):
+        state = state_from_request(case.request)
+        goal = _goal(case.request, state, analyzer)
+        outcome = ungated.plan(PlanningTask(case.request, state, None))
+        if outcome.plan is not None:
+            tallies["ungated plans"].add(case.case_id, list(outcome.plan), case.contract, state,
+                                         goal)
         reference = reference_plan(case.request, case.contract, timeout_ms=SOLVER_TIMEOUT_MS,
                                    reader=analyzer)
         if reference.plan is None:
             continue
-        state = state_from_request(case.request)
         for rule, mutant in mutants(reference.plan, state, case.contract):
             tallies["written to fail"].add(f"{case.case_id} {rule}", mutant, case.contract,
-                                           state)
+                                           state, goal)
     return _report(tallies, unauthorized)
 
 
 def _report(tallies: dict[str, Tally], unauthorized: int) -> int:
     console = Console()
     table = Table(title="Repairs of failing plans (budget: 4 edits, 300 candidates, 3 proofs)")
-    for column in ("source", "failing plans", "repaired", "re-verified (Z3)", "median ms",
-                   "p90 ms"):
+    for column in ("source", "failing plans", "repaired", "re-verified (Z3)",
+                   "repair still reaches the goal", "median ms", "p90 ms"):
         table.add_column(column)
     everything = Tally()
     for name, tally in [*tallies.items(), ("all", everything)]:
@@ -139,10 +185,13 @@ def _report(tallies: dict[str, Tally], unauthorized: int) -> int:
             everything.timings += tally.timings
             everything.edits += tally.edits
             everything.misses += tally.misses
+            everything.with_goal += tally.with_goal
+            everything.goal_kept += tally.goal_kept
         times = sorted(tally.timings)
         share = f"{100 * tally.repaired / tally.failing:.1f} %" if tally.failing else "-"
         table.add_row(name, str(tally.failing), f"{tally.repaired} ({share})",
                       f"{tally.proved_again}/{tally.repaired}",
+                      f"{tally.goal_kept}/{tally.with_goal}",
                       f"{statistics.median(times):.1f}" if times else "-",
                       f"{times[int(0.9 * (len(times) - 1))]:.1f}" if times else "-")
     console.print(table)
@@ -159,4 +208,4 @@ def _report(tallies: dict[str, Tally], unauthorized: int) -> int:
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(main(sys.argv[1:]))
