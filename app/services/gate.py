@@ -95,6 +95,8 @@ def _reference(services: Services, request: GateRequest, result: GateResult) -> 
                               reader=services.reader)
     except SafeGateError as error:  # fail closed: no plan rather than an unproved one
         return ReferencePlan(None, f"no reference plan: {error.detail}")
+    except Exception as error:  # the reader may fail like any Stage 1 reading: the decision stands
+        return ReferencePlan(None, f"no reference plan: planning failed ({type(error).__name__})")
 
 
 def answer(services: Services, request_id: str, answers: dict[str, Any]) -> Decided:
