@@ -2,8 +2,9 @@
 
 In: nothing. Out: a table per source of failing plans, then the edits used, the reasons of the
 plans without a repair and a few examples. Sources:
-- `tests`: the failing plans of the verification tests over HTTP (issue 17's hot-mug throw and
-  knife for Dad, `tests/scope_kit.py`; the knife thrown into the drawer, `test_verify_api.py`);
+- `tests`: the failing plans of the verification tests: over HTTP (issue 17's hot-mug throw and
+  knife for Dad, `tests/scope_kit.py`; the knife thrown into the drawer, `test_verify_api.py`)
+  and Stage 5's unit tests with their hand-written contracts (`tests/domain/verify/`);
 - `sim hazard scenarios` / `sim safe controls`: for every simulator scenario SafeGate
   authorizes, the plan the planner writes without a contract (what an unguarded planner would
   run), when it fails the contract;
@@ -108,6 +109,37 @@ def _gate(request: GateRequest, templates: TemplateIndex, analyzer: SymbolicAnal
     return result.contract if result.decision.decision.value == "authorize" else None
 
 
+def _stage5_test_plans() -> Iterator[tuple[str, Plan, Contract, WorldState]]:
+    """The failing plans of the Stage 5 unit tests (`tests/domain/verify/`), with their
+    hand-written contracts and kitchen."""
+    from tests.domain.verify.verify_kit import PICK_KNIFE, contract, kitchen
+
+    vase = [{"action": "GoToObject", "object": "vase_1"},
+            {"action": "PickupObject", "object": "vase_1"}]
+    cases: list[tuple[str, Plan, Contract]] = [
+        ("invariant broken after a pickup", PICK_KNIFE,
+         contract(invariants=("not holding(robot, #knife_1)",))),
+        ("invariant broken at the start", PICK_KNIFE,
+         contract(invariants=("same_room(robot, #tom)",))),
+        ("guard on a hot mug", [{"action": "pick", "object": "mug_1"}],
+         contract(guards=(("PickupObject", "@object != #mug_1 or not hot(#mug_1)"),))),
+        ("abort reached", PICK_KNIFE,
+         contract(aborts=("holding(robot, #knife_1) and same_room(robot, #ann)",))),
+        ("pickup out of reach", [{"action": "PickupObject", "object": "book_1"},
+                                 {"action": "Wait"}], contract()),
+        ("put with empty hands", [{"action": "PutObject", "object": "mug_1",
+                                   "target": "table_1"}], contract()),
+        ("pickup with full hands", [{"action": "PickupObject", "object": "knife_1"},
+                                    {"action": "PickupObject", "object": "mug_1"}], contract()),
+        ("unknown pickupable", [{"action": "GoToObject", "object": "widget_1"},
+                                {"action": "PickupObject", "object": "widget_1"}], contract()),
+        ("unknown lid", vase,
+         contract(guards=(("PickupObject", "@object != #vase_1 or lidded(#vase_1)"),))),
+    ]
+    for name, plan, rules in cases:
+        yield name, plan, rules, kitchen()
+
+
 def _test_plans() -> Iterator[tuple[str, GateRequest, Plan]]:
     from tests.api.test_verify_api import KNIFE_REQUEST, THROWING_PLAN
     from tests.scope_kit import KNIFE_PLAN, TEA_REQUEST, THROW_PLAN
@@ -151,6 +183,8 @@ def main(argv: list[str]) -> int:
         assert contract is not None, label
         state = state_from_request(request)
         tallies["tests"].add(label, plan, contract, state, _goal(request, state, analyzer))
+    for label, plan, contract, state in _stage5_test_plans():
+        tallies["tests"].add(label, plan, contract, state)
     unauthorized = _sim_plans(templates, analyzer, tallies)
     ungated = SearchPlanner(reader=analyzer)
     for case in (c for path in files for c in authorized(path, analyzer)):
