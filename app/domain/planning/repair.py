@@ -7,11 +7,10 @@ the Stage 5 verdict that proved it, or no plan and the reason.
 
 How: a best-first search over edited plans, in order of the number of edits. Each candidate is
 screened (`screen.py`: Stage 5's checks, evaluator first, one shared Z3 prover for what the
-evaluator leaves unknown) from the first step it changes;
-where it fails, the next edits are proposed. A candidate that passes the screen is verified with
-`verify_plan` (Z3, every value of the unknowns) and returned only if that passes. Because
-candidates are expanded in order of edits, the plan returned has the fewest edits among all
-plans the edit rules reach with fewer edits (all of them screened first), within the budget.
+evaluator leaves unknown) from the first step it changes; where it fails, the next edits are
+proposed there. A candidate that passes the screen is verified with `verify_plan` (Z3, every
+value of the unknowns) and returned only if that passes. Candidates come up in order of edits,
+so no plan the edit rules reach with fewer edits passes (within the budget, all were screened).
 Budget (`RepairBudget`): at most `max_edits` edits (default 4), `max_screens` candidates
 screened (300) and `max_proofs` Stage 5 runs (3); the screens share one solver budget of
 `timeout_ms`, and each proof has its own. Measured by `bench/repairs.py` and
