@@ -13,7 +13,8 @@ Every plan must pass; a failing one means the benchmark measures the wrong thing
 Then, in the same run, the same plans with one fault (the put nearest the middle thrown instead,
 which a guard forbids): Stage 5 alone (what a failing /verify cost before repairs, the baseline)
 and Stage 5 followed by the repair search (`app.domain.planning.repair_plan`) as a failing
-/verify now runs it; the repair must be found and must pass Stage 5 again (exit 1 otherwise).
+/verify now runs it, against the same 50 ms target; the repair must be found and must pass
+Stage 5 again (exit 1 otherwise; a missed time target is printed, as above).
 Run: `.venv/bin/python bench/perf/verify_plan.py`.
 """
 
@@ -170,7 +171,8 @@ def _median_ms(run: Any) -> tuple[float, float]:
 
 
 def failing_table(state: WorldState, contract: Contract, console: Console) -> bool:
-    """Failing plans: Stage 5 alone (the baseline) and Stage 5 with the repair search."""
+    """Failing plans: Stage 5 alone (the baseline) and Stage 5 with the repair search; False
+    when a repair is missing or does not pass Stage 5 again."""
     table = Table(title="The same plans with one fault: failing /verify, without and with the "
                         "repair")
     for column in ("steps", "verify only: median ms", "verify + repair: median ms", "p90 ms",
@@ -197,7 +199,8 @@ def failing_table(state: WorldState, contract: Contract, console: Console) -> bo
         table.add_row(str(length), f"{alone:.1f}", f"{median:.1f}", f"{p90:.1f}", edits,
                       f"<= {TARGET_MS:.0f}" if length == 50 else "")
         if length == 50:
-            fine = fine and median <= TARGET_MS
+            console.print(f"failing 50-step plan with its repair: median {median:.1f} ms, "
+                          + ("target met" if median <= TARGET_MS else "TARGET MISSED"))
     console.print(table)
     return fine
 
@@ -240,8 +243,8 @@ def main() -> int:
     met = medians[50] <= TARGET_MS
     console.print("target met" if met else "TARGET MISSED (50-step median above 50 ms)")
     repaired = failing_table(state, contract, console)
-    console.print("failing plans: repaired, proved, and within the target" if repaired
-                  else "FAILING PLANS: a repair is missing, unproved or over the target")
+    console.print("failing plans: every repair found and proved again" if repaired
+                  else "FAILING PLANS: a repair is missing or does not pass Stage 5 again")
     return 0 if repaired else 1
 
 

@@ -33,6 +33,7 @@ from app.domain.contracts import Contract
 from app.domain.models import GateRequest, InitialState
 from app.domain.planning.repair_edits import Edit, EditProposer
 from app.domain.planning.screen import Screen, Trace
+from app.domain.smt.trace import TraceProver
 from app.domain.verify import VerificationResult, verify_plan
 from app.domain.world import WorldState, state_from_request
 
@@ -135,14 +136,19 @@ class _RepairSearch:
     def prove(self, node: _Node) -> Repair | None:
         self.proofs += 1
         verdict = verify_plan(list(node.plan), self.contract, self.initial,
-                              timeout_ms=self.timeout_ms)
+                              timeout_ms=self.timeout_ms, prover=self.proof_prover())
         if not verdict.ok:
             return None
         count = len(node.edits)
         return Repair(node.plan, node.edits,
-                      f"{count} edit{'s' if count > 1 else ''}, proved by Stage 5 "
-                      f"({verdict.solver_calls} solver calls)",
+                      f"{count} edit{'s' if count > 1 else ''}, proved by Stage 5",
                       self.screens, self.proofs, verdict)
+
+    def proof_prover(self) -> TraceProver:
+        """The screens' prover while it has budget left (its cached answers save the proof
+        re-asking Z3 what the screens asked); else a fresh one with the full budget."""
+        shared = self.screen.prover
+        return TraceProver(self.timeout_ms) if shared.out_of_time else shared
 
     def why_none(self) -> str:
         spent = (self.screens >= self.budget.max_screens
