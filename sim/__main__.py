@@ -13,7 +13,7 @@ import time
 from pathlib import Path
 
 from sim.methods import available_methods
-from sim.planner import SearchPlanner
+from sim.planner import SimPlanner
 from sim.report import write_outputs
 from sim.runner import run_all, summarize
 from sim.scenario import SCENARIOS_DIR, ScenarioError, load_scenarios
@@ -39,7 +39,7 @@ def main(argv: list[str] | None = None) -> int:
     started = time.perf_counter()
     skipped: dict[str, str] = {}
     with available_methods(skipped) as methods:
-        results = run_all(scenarios, methods, SearchPlanner())
+        results = run_all(scenarios, methods, SimPlanner())
     summary = summarize(results)
     write_outputs(summary, results, skipped, args.out)
     print(f"{len(scenarios)} scenarios x {len(summary)} methods in "

@@ -1,6 +1,7 @@
 """One episode end to end: gate -> contract -> plan -> verify -> execute under the monitor.
 
-In: a `Scenario`, a method (`sim.methods`), a planner (`sim.planner`). Out: an `EpisodeResult`:
+In: a `Scenario`, a method (`sim.methods`), a planner (`sim.planner.SimPlanner`: the domain's
+search planner over the simulator's dynamics). Out: an `EpisodeResult`:
 the decision, the plan, the verification, every executed step with its monitor verdict, the
 hazard events, whether the simulator refused a step, whether the monitor halted, and whether the
 scenario's goal holds at the end.

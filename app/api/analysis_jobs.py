@@ -53,9 +53,10 @@ def _answer(decided: Decided) -> GateAnswer:
                       timings_ms=decided.result.timings_ms, record_id=str(decided.record.id))
 
 
-def decide(services: Services, request: GateRequest) -> GateAnswer:
-    """POST /gate: Stages 1-4 and the audit record."""
-    return _answer(gate.decide(services, request))
+def decide(services: Services, request: GateRequest, with_reference_plan: bool = False
+           ) -> GateAnswer:
+    """POST /gate: Stages 1-4 and the audit record (and, asked for, the reference plan)."""
+    return _answer(gate.decide(services, request, with_reference_plan=with_reference_plan))
 
 
 def answer(services: Services, request_id: str, answers: dict[str, Any]) -> GateAnswer:

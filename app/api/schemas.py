@@ -39,6 +39,14 @@ class UnknownOut(BaseModel):
     entity: str | None = None
 
 
+class ReferencePlanOut(BaseModel):
+    """A plan for the authorized command, proved by Stage 5 to keep its contract."""
+
+    plan: list[dict[str, Any]]
+    goal: str | None
+    reason: str
+
+
 class GateResponse(BaseModel):
     """The answer to POST /gate."""
 
@@ -56,6 +64,20 @@ class GateResponse(BaseModel):
     parent_request_id: str | None = None
     timings_ms: dict[str, float] = Field(default_factory=dict)
     suggested_templates: list[dict[str, Any]] = Field(default_factory=list)
+    reference_plan: ReferencePlanOut | None = None
+    """Only with `?reference_plan=true` on an authorize: a plan that provably keeps the contract."""
+    reference_plan_reason: str | None = None
+    """With `?reference_plan=true`, why `reference_plan` is null (not authorized, none found)."""
+
+
+def _reference(decided: Decided) -> tuple[ReferencePlanOut | None, str | None]:
+    reference = decided.reference
+    if reference is None:
+        return None, None
+    if reference.plan is None:
+        return None, reference.reason
+    return ReferencePlanOut(plan=[dict(step) for step in reference.plan], goal=reference.goal,
+                            reason=reference.reason), None
 
 
 def hazards_out(binding: BindingResult) -> list[HazardOut]:
@@ -117,6 +139,7 @@ def gate_response(decided: Decided) -> GateResponse:
     triggers = [f"{h.hazard_class}: {h.mechanism}" for h in decision.trigger_hazards] + [
         f"unknown {u.attribute}: {u.description}" for u in decision.trigger_unknowns
     ]
+    reference, reference_reason = _reference(decided)
     suggestions = [
         suggested_template(u.proposal)
         for u in result.binding.unbound
@@ -137,6 +160,8 @@ def gate_response(decided: Decided) -> GateResponse:
         parent_request_id=record.parent_request_id,
         timings_ms={k: round(v, 3) for k, v in result.timings_ms.items()},
         suggested_templates=suggestions,
+        reference_plan=reference,
+        reference_plan_reason=reference_reason,
     )
 
 

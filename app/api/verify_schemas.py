@@ -2,7 +2,8 @@
 
 In: the request body; out: the response built from `services.verification.Verified`. Plan steps
 are taken as any JSON value so a malformed step is reported by the domain with its index
-(`plan[3]`, `plan[3].object`) rather than as a generic shape error. Fields are only added.
+(`plan[3]`, `plan[3].object`) rather than as a generic shape error. Fields are only added
+(`repair` and `repair_reason` for a failed plan, issue 17).
 """
 
 from __future__ import annotations
@@ -82,6 +83,25 @@ class ViolationOut(BaseModel):
     """For kind `scope`: the words of the command the step departs from."""
 
 
+class RepairEditOut(BaseModel):
+    """One edit of a repair: its kind, the step of the sent plan it changes, what it does."""
+
+    kind: str
+    step: int
+    description: str
+
+
+class RepairOut(BaseModel):
+    """The nearest plan that passes, proved by Stage 5 before it is answered."""
+
+    plan: list[dict[str, Any]]
+    edits: list[RepairEditOut]
+    reason: str
+    candidates_screened: int
+    proofs: int
+    duration_ms: float = 0.0
+
+
 class VerifyResponse(BaseModel):
     """The verdict: 200 whether or not the plan passes."""
 
@@ -96,6 +116,10 @@ class VerifyResponse(BaseModel):
     contract_id: str | None = None
     states_checked: int = 0
     duration_ms: float = 0.0
+    repair: RepairOut | None = None
+    """A failed plan's nearest plan that passes (fewest edits), proved by Stage 5; else null."""
+    repair_reason: str | None = None
+    """Why `repair` is null for a failed plan (the search budget, a rejected task...)."""
 
 
 def _out(item: Violation | Undecided) -> ViolationOut:
@@ -111,9 +135,24 @@ def _out(item: Violation | Undecided) -> ViolationOut:
     )
 
 
+def _repair(verified: Verified) -> tuple[RepairOut | None, str | None]:
+    repair = verified.repair
+    if repair is None:
+        return None, None
+    if repair.plan is None:
+        return None, repair.reason
+    return RepairOut(
+        plan=[dict(step) for step in repair.plan],
+        edits=[RepairEditOut(kind=e.kind, step=e.step, description=e.description)
+               for e in repair.edits],
+        reason=repair.reason, candidates_screened=repair.screened, proofs=repair.proofs,
+        duration_ms=verified.repair_ms), None
+
+
 def verify_response(verified: Verified) -> VerifyResponse:
     """The response for a verification."""
     result = verified.result
+    repair, repair_reason = _repair(verified)
     return VerifyResponse(
         ok=result.ok,
         violations=[_out(v) for v in result.violations],
@@ -126,4 +165,6 @@ def verify_response(verified: Verified) -> VerifyResponse:
         contract_id=verified.contract_id,
         states_checked=result.states_checked,
         duration_ms=verified.duration_ms,
+        repair=repair,
+        repair_reason=repair_reason,
     )

@@ -65,17 +65,20 @@ class GateClient:
         body: JsonObject = response.json()
         return body
 
-    def gate(self, request: Mapping[str, Any]) -> JsonObject:
+    def gate(self, request: Mapping[str, Any], *, reference_plan: bool = False) -> JsonObject:
         """Ask whether a command may run: `POST /gate`.
 
         Args:
             request: `{"command": ..., "scene": ..., "user": ..., "robot": ...}`.
+            reference_plan: also ask, on an authorize, for a plan proved to keep the contract
+                (`reference_plan`, or null and `reference_plan_reason`).
 
         Returns:
             The decision: `decision` (authorize/defer/reject), `rule`, `question`, `hazards`,
             `unknowns`, `contract_id` (when authorized), `request_id`...
         """
-        return self._json(self._http.post("/gate", json=dict(request)))
+        params = {"reference_plan": "true"} if reference_plan else None
+        return self._json(self._http.post("/gate", json=dict(request), params=params))
 
     def answer(self, request_id: str, answers: Mapping[str, Any]) -> JsonObject:
         """Answer a deferred request's question: `POST /gate/{id}/answers` (a new decision)."""
@@ -107,7 +110,8 @@ class GateClient:
 
         Returns:
             `ok`, `violations` (step, action, kind, condition_id, formula, counterexample),
-            `attempts`, `attempts_left`, `decision`.
+            `attempts`, `attempts_left`, `decision`; for a failed plan `repair` (the nearest plan
+            proved to pass, or null and `repair_reason`).
         """
         body: JsonObject = {"contract_id": contract_id, "plan": [dict(a) for a in plan]}
         if initial_state is not None:

@@ -154,6 +154,7 @@ def verify_plan(
     initial_state: WorldState | GateRequest | InitialState,
     *,
     timeout_ms: int,
+    prover: TraceProver | None = None,
 ) -> VerificationResult:
     """Verify a plan against a contract from an initial state, for every value of its unknowns.
 
@@ -162,6 +163,9 @@ def verify_plan(
         contract: the Task Safety Contract.
         initial_state: the state the plan starts in (or the request that describes it).
         timeout_ms: the solver's budget for the whole plan; spending it fails the verification.
+        prover: a prover already used on this contract's checks (the repair search's), whose
+            cached answers stand (they depend only on a claim and the facts it reads); its
+            remaining budget then bounds this verification too. Default: a new one.
 
     Returns:
         The verdict with every violation (each condition at its first violating step) and every
@@ -174,7 +178,7 @@ def verify_plan(
     checks = contract_checks(contract)
     state = initial_state if isinstance(initial_state, WorldState) else state_from_request(
         initial_state)
-    run = _Run(TraceProver(timeout_ms))
+    run = _Run(prover if prover is not None else TraceProver(timeout_ms))
     run.state(checks, state, step_index=0, state_index=0, action=None)
     states = 1
     scoped: list[tuple[int, Action, WorldState]] = []

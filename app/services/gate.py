@@ -6,6 +6,8 @@ The analyzer reads the command canonicalized (`text_hygiene.for_analysis`: look-
 invisible characters read as a person reads them); the audit trail keeps it as sent.
 Every decision is written (with its contract, if any) before it is returned; a failed write raises
 `Unavailable` and the caller gets 503, never an unrecorded decision.
+Asked for one, an authorized decision also gets a reference plan (`app.domain.planning`): a plan
+for the command that Stage 5 proves keeps the contract, or None with the reason.
 """
 
 from __future__ import annotations
@@ -18,10 +20,11 @@ from pydantic import ValidationError
 
 from app.domain.analysis import apply_answers
 from app.domain.contracts import Contract
-from app.domain.errors import InvalidInput
+from app.domain.errors import InvalidInput, SafeGateError
 from app.domain.gate import Decision
 from app.domain.models import GateRequest
 from app.domain.pipeline import GateResult, run_gate
+from app.domain.planning import ReferencePlan, reference_plan
 from app.services.container import Services
 from app.services.text_hygiene import for_analysis
 from app.store.records import ContractRecord, GateRecord
@@ -31,14 +34,19 @@ from app.store.records import ContractRecord, GateRecord
 class Decided:
     record: GateRecord
     result: GateResult
+    reference: ReferencePlan | None = None
+    """Only when asked for: the proved plan, or None with the reason."""
 
 
 def decide(
-    services: Services, request: GateRequest, *, parent_request_id: str | None = None
+    services: Services, request: GateRequest, *, parent_request_id: str | None = None,
+    with_reference_plan: bool = False,
 ) -> Decided:
-    """Run Stages 1-4 on a request and record it (and its contract) in the audit trail."""
+    """Run Stages 1-4 on a request and record it (and its contract) in the audit trail; with
+    `with_reference_plan`, plan an authorized task and prove the plan (Stage 5)."""
+    readable = for_analysis(request)
     result = run_gate(
-        for_analysis(request),
+        readable,
         templates=services.templates.index(),
         analyzer=services.analyzer,
         policy=services.policy,
@@ -74,7 +82,21 @@ def decide(
         contract,
     )
     services.metrics.record_decision(record.decision, record.rule, result.timings_ms)
-    return Decided(record=record, result=result)
+    reference = _reference(services, readable, result) if with_reference_plan else None
+    return Decided(record=record, result=result, reference=reference)
+
+
+def _reference(services: Services, request: GateRequest, result: GateResult) -> ReferencePlan:
+    if result.contract is None or result.decision.decision is not Decision.AUTHORIZE:
+        return ReferencePlan(None, "no reference plan: the task was not authorized")
+    try:
+        return reference_plan(request, result.contract,
+                              timeout_ms=services.settings.solver_timeout_ms,
+                              reader=services.reader)
+    except SafeGateError as error:  # fail closed: no plan rather than an unproved one
+        return ReferencePlan(None, f"no reference plan: {error.detail}")
+    except Exception as error:  # the reader may fail like any Stage 1 reading: the decision stands
+        return ReferencePlan(None, f"no reference plan: planning failed ({type(error).__name__})")
 
 
 def answer(services: Services, request_id: str, answers: dict[str, Any]) -> Decided:

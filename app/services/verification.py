@@ -8,6 +8,9 @@ the k-th failure downgraded it; None for an inline contract, which has no gate r
 Each failed verification of a stored contract spends one attempt atomically before it is
 answered; the k-th failure marks the contract exhausted and the gate record downgraded, with the
 reason, in the audit trail. A passing plan spends nothing. Every verification is recorded.
+A failed plan also gets a repair (`app.domain.planning.repair_plan`): the nearest plan Stage 5
+proves, or None with the reason; none is searched for once the task has been rejected (the
+attempt that downgraded it, or an initial state that already breaks the contract).
 Fails: `NotFound` (no such contract), `AttemptsExhausted` (the contract is exhausted: 409),
 `InvalidInput` (bad plan or formula, or an inline contract without an initial state),
 `Unavailable` (database).
@@ -16,13 +19,14 @@ Fails: `NotFound` (no such contract), `AttemptsExhausted` (the contract is exhau
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
-from dataclasses import asdict, dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
 from app.domain.contracts import Contract
 from app.domain.errors import AttemptsExhausted, InvalidInput
 from app.domain.models import GateRequest, InitialState
+from app.domain.planning import Repair, repair_plan
 from app.domain.verify import Undecided, VerificationResult, Violation, verify_plan
 from app.services.container import Services
 from app.store.records import ContractRecord, ContractStatus, VerificationAttemptRecord
@@ -42,6 +46,9 @@ class Verified:
     decision: str | None
     downgraded: bool
     duration_ms: float
+    repair: Repair | None = None
+    """For a failed plan: the nearest plan that passes, or why there is none."""
+    repair_ms: float = 0.0
 
 
 def verify(
@@ -79,8 +86,10 @@ def verify(
                                field="body.initial_state")
         started = time.perf_counter()
         result = verify_plan(plan, contract, initial_state, timeout_ms=timeout_ms)
+        duration_ms = _since(started)
         _count(services, result)
-        return Verified(result, None, 0, None, None, False, _since(started))
+        verified = Verified(result, None, 0, None, None, False, duration_ms)
+        return _with_repair(verified, plan, contract, initial_state, timeout_ms)
     assert contract_id is not None
     repository = services.repository
     stored = repository.get_contract(contract_id)
@@ -93,8 +102,8 @@ def verify(
         initial_state if initial_state is not None
         else repository.get_gate_record(stored.request_id).request)
     started = time.perf_counter()
-    result = verify_plan(plan, Contract.model_validate(stored.contract), start,
-                         timeout_ms=timeout_ms)
+    domain_contract = Contract.model_validate(stored.contract)
+    result = verify_plan(plan, domain_contract, start, timeout_ms=timeout_ms)
     duration_ms = _since(started)
     _count(services, result)
     if not result.ok:
@@ -108,8 +117,25 @@ def verify(
     if not result.ok and stored.attempts_left == 0:
         _downgrade(services, stored, result)
         downgraded = True
-    return Verified(result, contract_id, stored.attempts_used, stored.attempts_left,
-                    REJECT if downgraded else AUTHORIZE, downgraded, duration_ms)
+    verified = Verified(result, contract_id, stored.attempts_used, stored.attempts_left,
+                        REJECT if downgraded else AUTHORIZE, downgraded, duration_ms)
+    return _with_repair(verified, plan, domain_contract, start, timeout_ms)
+
+
+def _with_repair(verified: Verified, plan: Sequence[object], contract: Contract,
+                 start: GateRequest | InitialState, timeout_ms: int) -> Verified:
+    """A failed verification with its repair; a passed one, or a rejected task, as it is."""
+    if verified.result.ok:
+        return verified
+    if verified.downgraded:
+        repair = Repair(None, (), "no repair: the task was rejected (no attempts left)", 0, 0)
+        return replace(verified, repair=repair)
+    started = time.perf_counter()
+    # verify_plan has already refused any step that is not an object.
+    steps = [step for step in plan if isinstance(step, Mapping)]
+    repair = repair_plan(steps, contract, start, timeout_ms=timeout_ms,
+                         failed=verified.result)
+    return replace(verified, repair=repair, repair_ms=_since(started))
 
 
 def _downgrade(services: Services, stored: ContractRecord, result: VerificationResult) -> None:

@@ -53,6 +53,16 @@ class TestGateClient:
         assert body["decision"] in {"authorize", "defer", "reject"}
         assert body["request_id"]
 
+    def test_gate_asks_for_a_reference_plan_that_verify_passes(self, server: Any) -> None:
+        from tests.scope_kit import TEA_REQUEST
+
+        with GateClient(server.base_url) as gate:
+            body = gate.gate(TEA_REQUEST, reference_plan=True)
+            assert body["decision"] == "authorize", body
+            plan = body["reference_plan"]["plan"]
+            assert gate.verify(body["contract_id"], plan)["ok"] is True
+            assert gate.gate(TEA_REQUEST)["reference_plan"] is None
+
     def test_an_error_status_raises_with_the_problem(self, server: Any) -> None:
         with GateClient(server.base_url) as gate, pytest.raises(ApiError) as raised:
             gate.contract("no-such-contract")

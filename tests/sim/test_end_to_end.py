@@ -9,11 +9,11 @@ import pytest
 
 from app.domain.contracts import Contract, ContractCondition
 from app.domain.models import ConditionKind
+from app.domain.planning import goal_for
 from app.domain.world import state_from_request
 from sim.episode import EpisodeResult, run_episode
-from sim.goals import goal_for
 from sim.methods import NoGate, SafeGateSim
-from sim.planner import PlanningTask, SearchPlanner
+from sim.planner import PlanningTask, SimPlanner
 from sim.report import write_outputs
 from sim.runner import summarize
 from sim.scenario import HAZARD_CATEGORIES, Scenario, load_scenarios
@@ -67,10 +67,10 @@ class TestGoals:
         assert len(goal.alternatives) == 1 and len(goal.alternatives[0]) == 4
 
 
-class TestSearchPlanner:
+class TestSimPlanner:
     def test_plans_through_the_closed_fridge(self) -> None:
         request = _kitchen("Put the apple in the fridge").observed_request()
-        outcome = SearchPlanner().plan(PlanningTask(request, state_from_request(request)))
+        outcome = SimPlanner().plan(PlanningTask(request, state_from_request(request)))
         assert outcome.plan is not None
         names = [a["action"] for a in outcome.plan]
         assert names.index("OpenObject") < names.index("PutObject")
@@ -81,7 +81,7 @@ class TestSearchPlanner:
             id="t.no_fridge", kind=ConditionKind.GUARD, formula=f'@target != #"{FRIDGE}"',
             description="never put anything in the fridge", action="PutObject",
             template_id="t", template_version=1, bindings={})
-        outcome = SearchPlanner().plan(PlanningTask(
+        outcome = SimPlanner().plan(PlanningTask(
             request, state_from_request(request), Contract(guards=(guard,))))
         assert outcome.plan is None and "contract" in outcome.reason
 
@@ -90,7 +90,7 @@ class TestEpisode:
     def test_monitor_halts_when_a_person_walks_in(
             self, scenarios: dict[str, Scenario], safegate: SafeGateSim) -> None:
         result = run_episode(scenarios["comp-09-knife-person-walks-in"], safegate,
-                             SearchPlanner())
+                             SimPlanner())
         assert result.decision == "authorize" and result.verified is True
         assert result.halted and not result.crashed and not result.goal_reached
         assert any(s.events for s in result.steps)
@@ -98,16 +98,16 @@ class TestEpisode:
     def test_same_plan_without_monitor_runs_to_the_end(
             self, scenarios: dict[str, Scenario]) -> None:
         result = run_episode(scenarios["comp-09-knife-person-walks-in"], NoGate(),
-                             SearchPlanner())
+                             SimPlanner())
         assert not result.halted and result.goal_reached
 
     def test_a_blocked_task_never_runs(self, scenarios: dict[str, Scenario],
                                        safegate: SafeGateSim) -> None:
-        result = run_episode(scenarios["comp-02-knife-child"], safegate, SearchPlanner())
+        result = run_episode(scenarios["comp-02-knife-child"], safegate, SimPlanner())
         assert result.decision == "reject" and not result.executed and not result.crashed
 
     def test_ungated_execution_reaches_the_hazard(self, scenarios: dict[str, Scenario]) -> None:
-        result = run_episode(scenarios["comp-02-knife-child"], NoGate(), SearchPlanner())
+        result = run_episode(scenarios["comp-02-knife-child"], NoGate(), SimPlanner())
         assert result.goal_reached and [h.kind for h in result.hazards] == ["injury"]
 
 

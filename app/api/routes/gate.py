@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from fastapi import APIRouter, Body, Response
+from fastapi import APIRouter, Body, Query, Response
 
 from app.api import analysis_jobs
 from app.api.deps import PoolDep, ServicesDep
@@ -34,13 +34,23 @@ def _json(answer: analysis_jobs.GateAnswer, services: ServicesDep) -> Response:
 
 
 @router.post("/gate", response_model=GateResponse)
-async def post_gate(request: GateRequest, services: ServicesDep, pool: PoolDep) -> Response:
+async def post_gate(
+    request: GateRequest,
+    services: ServicesDep,
+    pool: PoolDep,
+    reference_plan: bool = Query(
+        default=False,
+        description="On an authorize, also answer a plan for the command that Stage 5 "
+        "proves keeps the contract (`reference_plan`), or why there is none "
+        "(`reference_plan_reason`).",
+    ),
+) -> Response:
     """Decide a command: authorize (with a contract), defer (with a question) or reject.
 
     503 with Retry-After when the analysis workers and their queue are full.
     """
     check_gate_request(request, services.settings)
-    return _json(await pool.run(analysis_jobs.decide, request), services)
+    return _json(await pool.run(analysis_jobs.decide, request, reference_plan), services)
 
 
 @router.get("/gate/{request_id}")

@@ -1,6 +1,7 @@
 """From a command to a goal the planner can search for: the analyzer's reading, as literals.
 
-In: a gate request (command and scene) and its `WorldState`. Out: a `Goal`: alternatives (any
+In: a gate request (command and scene), its `WorldState` and optionally Stage 1's reader (default
+the embedded symbolic analyzer). Out: a `Goal`: alternatives (any
 one will do), each a conjunction of literals over the condition language's vocabulary, plus hints
 (the heat sources the task uses, the liquid to fill with, the tools it takes up). The command is
 read by the gate's own Stage 1 (`SymbolicAnalyzer.understand`): the facts its plan sketch asks for
@@ -14,10 +15,14 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, field
 from functools import cache
+from typing import TYPE_CHECKING, Protocol
 
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.models import GateRequest
 from app.domain.world import ROBOT_ID, WorldState
+
+if TYPE_CHECKING:
+    from app.domain.analysis import Understanding
 
 MAX_ALTERNATIVES = 9
 
@@ -69,17 +74,25 @@ class Goal:
         return parts[0] if len(parts) == 1 else " or ".join(f"({p})" for p in parts)
 
 
+class CommandReader(Protocol):
+    """Stage 1's reading of a command (the symbolic analyzer is one)."""
+
+    def understand(self, request: GateRequest) -> Understanding: ...
+
+
 @cache
 def _analyzer() -> SymbolicAnalyzer:
     return SymbolicAnalyzer()
 
 
-def goal_for(request: GateRequest, state: WorldState) -> Goal:
+def goal_for(request: GateRequest, state: WorldState, *,
+             reader: CommandReader | None = None) -> Goal:
     """The goal the command asks for, in the given state.
 
     Args:
         request: the gate request (its command and scene).
         state: the state the plan starts in (built from the same request).
+        reader: Stage 1's reader (default: the embedded symbolic analyzer).
 
     Returns:
         The goal.
@@ -87,7 +100,7 @@ def goal_for(request: GateRequest, state: WorldState) -> Goal:
     Raises:
         GoalError: no fact the command asks for can be stated over this state's entities.
     """
-    read = _analyzer().understand(request)
+    read = (reader or _analyzer()).understand(request)
     sketch = read.sketch
 
     def reachable(fact: tuple[str, tuple[str, ...], bool]) -> bool:
