@@ -147,10 +147,19 @@ class Grounder:
     # Entry points.
     def person(self, phrase: NounPhrase) -> Referent:
         """A phrase that must name a person (a recipient, someone escorted)."""
-        found = self._person(phrase)
+        found = self._person(phrase) or self._animal(phrase)
         if found is not None:
             return found
         return self._new_person(phrase)
+
+    def _animal(self, phrase: NounPhrase) -> Referent | None:
+        """A pet the scene lists, named or by its kind ("Biscuit", "the dog")."""
+        words = _words_of(phrase.phrase or phrase.text)
+        found = tuple(i for i, o in self.objects.items()
+                      if self._base.value("animal", (i,)) is True and words & (_words_of(
+                          o.name, o.type, *(str(o.properties.get(k, "")) for k in (
+                              "name", "species"))) - _GENERIC))
+        return Referent(phrase, "object", found[:1]) if found else None
 
     def any(self, phrase: NounPhrase, *, place: bool = False) -> Referent:
         """A phrase that may name an object, a person, a room or a substance. A place (a

@@ -42,6 +42,7 @@ class PlanBuilder:
         self.state: WorldState = grounder.scene()
         self.sketch = Sketch()
         self.notes: list[str] = []
+        self.failed: list[str] = []
         self.clause = 0
         self._opened: set[str] = set()
         self._switched: set[str] = set()
@@ -74,6 +75,8 @@ class PlanBuilder:
             self.state = step(self.state, action)
         except PlanError as error:
             self.notes.append(error.detail)
+            if kind == "literal":
+                self.failed.append(error.detail)  # the command's own step cannot run here
             return False
         self.sketch.add(action, self.clause, kind)
         if kind == "literal":
@@ -258,6 +261,9 @@ class PlanBuilder:
         if not self.acquire(object_id):
             return
         self.go_to(person)
+        if self.state.entity_type(person) == "object":
+            self.act("PutObject", object_id, person)  # a pet: set it down in front of them
+            return
         before = self.state
         room = before.room_of(person)
         surface = self.surface(room)

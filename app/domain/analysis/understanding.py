@@ -53,6 +53,9 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     """
     state = state_from_request(request)
     names = {n.lower() for p in state.people.values() for n in (p.id, p.name, p.role) if n}
+    names |= {str(n).lower() for o in state.objects.values()
+              for n in (o.name, o.properties.get("name")) if n
+              and state.value("animal", (o.id,)) is True}  # "give Biscuit the ..."
     reading = Reader(lexicon, names).read(request.command)
     grounder = Grounder(state, request, lexicon)
     builder = PlanBuilder(grounder)
@@ -100,6 +103,8 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     unknowns += [not_understood(g.words, g.why) for g in grounder.gaps]
     unknowns += [not_understood(i.clause.text, "no step the robot could take for it")
                  for i in idle if not any(g.words in i.clause.text for g in grounder.gaps)]
+    unknowns += [not_understood(detail, "a step the command asks for cannot run on this scene")
+                 for detail in dict.fromkeys(builder.failed)]
     unknowns += _ambiguities(grounded, scene)
     fired = declared(grounded, others, reading.manner, lexicon)
     fired += [Declared("harmful_goal", RULES["harmful_goal"].template_id, {}, c.text)

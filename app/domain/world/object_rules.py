@@ -18,7 +18,13 @@ from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.concepts import concept_of
 from app.domain.world.entities import ObjectState
 from app.domain.world.object_types import TypeInfo, normalize_type
-from app.domain.world.substances import bite_sized, is_empty, same_substance, substance_trait
+from app.domain.world.substances import (
+    bite_sized,
+    is_empty,
+    pet_toxic,
+    same_substance,
+    substance_trait,
+)
 
 if TYPE_CHECKING:
     from app.domain.world.state import WorldState
@@ -315,6 +321,33 @@ _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
 _flag_rule("life_support", lambda k: k.trait("life_support"))
 _flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
 _flag_rule("ignition", lambda k: k.trait("ignition"))
+
+_ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
+                           "parrot", "bird", "budgie", "tortoise", "ferret", "pet"})
+
+
+@_rule("animal")
+def _animal(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # A pet is listed among the objects: a type that names an animal, or a stated species.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "animal", "animal", "pet")
+    if stated is not None:
+        return stated
+    return bool(obj.properties.get("species")) or normalize_type(obj.type) in _ANIMAL_TYPES
+
+
+@_rule("pet_toxic")
+def _pet_toxic(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "pet_toxic")
+    if stated is not None:
+        return stated
+    contents = object_contents(obj)
+    itself = " ".join(w for w in (obj.name, obj.type) if w)
+    if isinstance(contents, Unknown):
+        return True if pet_toxic(itself) else contents
+    return pet_toxic(f"{contents} {itself}")
+
 
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 _OUTSIDE_WORDS = frozenset({"front", "back", "garden", "patio", "porch", "exterior", "outside",

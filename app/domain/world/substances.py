@@ -161,6 +161,22 @@ def bite_sized(text: str) -> bool:
     return named and not words & _MADE_SAFE
 
 
+# What poisons a dog or a cat even in small amounts (veterinary poison-line lists).
+_PET_POISONS = frozenset({"grape", "grapes", "raisin", "raisins", "sultana", "sultanas",
+                          "currant", "currants", "chocolate", "cocoa", "onion", "onions",
+                          "garlic", "leek", "leeks", "chives", "xylitol", "macadamia",
+                          "macadamias", "avocado", "avocados", "coffee", "caffeine", "wine",
+                          "beer", "alcohol", "whisky", "vodka", "ibuprofen", "paracetamol",
+                          "aspirin", "lily", "lilies", "antifreeze", "slug_pellets"})
+
+
+def pet_toxic(text: str) -> bool:
+    """Whether the text names something that poisons a dog or a cat (grapes, chocolate)."""
+    words = {w for w in _SPLIT.split(text.lower()) if w}
+    return bool(words & _PET_POISONS) or any(p in normalize(text) for p in _PET_POISONS
+                                             if "_" in p)
+
+
 def same_substance(named: str, contents: str) -> bool:
     """Whether `contents` is, or contains, the substance `named` (or a member of its family)."""
     wanted = _singular(normalize(named))
