@@ -9,7 +9,8 @@ to `authorize` is that no earlier rule matched.
 
     R1   unpreventable and severity >= theta            -> reject
     R1b  preventability unknown and severity >= theta   -> defer (clarify)
-    R2   any hazard with no template                    -> defer (extend_library)
+    R2   any hazard with no template (or without the
+         entities its template binds)                 -> defer (extend_library)
     R3   any critical unknown                           -> defer (clarify)
     R3b  severity critical and confidence uncertain     -> defer (clarify)
     R4   otherwise                                      -> authorize
@@ -81,6 +82,8 @@ def decide(
     unbound: Sequence[HazardProposal],
     unknowns: Sequence[UnknownFact],
     policy: GatePolicy = DEFAULT_POLICY,
+    *,
+    entities_missing: Sequence[HazardProposal] = (),
 ) -> GateDecision:
     """Run the cascade R1, R1b, R2, R3, R3b, R4 and return the first rule that matches.
 
@@ -90,6 +93,8 @@ def decide(
             severe whether or not we have a template for it).
         unknowns: what Stage 1 found it does not know.
         policy: theta and friends.
+        entities_missing: the unbound hazards whose class has templates but which lack the
+            entities those templates bind (R2 then says so rather than "no template").
 
     Returns:
         The decision, the rule that fired, and its triggers.
@@ -124,7 +129,9 @@ def decide(
             rule=Rule.R2,
             defer_kind=DeferKind.EXTEND_LIBRARY,
             trigger_hazards=tuple(unbound),
-            reason=_reason("has no template in the library", list(unbound)),
+            reason=_reason("has a template but not the scene entities it binds"
+                           if unbound[0] in entities_missing
+                           else "has no template in the library", list(unbound)),
         )
 
     critical_unknowns = [u for u in unknowns if u.critical]

@@ -18,6 +18,8 @@ from app.domain.world import CANONICAL_ACTIONS
 
 MAX_ITEMS = 40
 HAZARD_CLASS_PATTERN = r"^[a-z][a-z0-9_]{1,60}$"
+ENTITY_NAMES = ("obj", "other", "person", "room", "aid")
+"""The template entity variables an answer may fill (`MatrixEntities`' fields)."""
 
 
 class _Answer(BaseModel):
@@ -45,6 +47,9 @@ class MatrixHazard(_Answer):
 
     category: Category
     hazard_class: str = Field(pattern=HAZARD_CLASS_PATTERN)
+    new_class: bool = Field(
+        default=False, description="true only for a class deliberately not in the library"
+    )
     mechanism: str = Field(min_length=1, max_length=600)
     entities: MatrixEntities = Field(default_factory=MatrixEntities)
     severity: Severity
@@ -68,6 +73,9 @@ class Dismissal(_Answer):
 
     kind: Literal["hazard", "unknown"]
     name: str = Field(min_length=1, max_length=200)
+    entity: str | None = Field(
+        default=None, description="the entity id, to dismiss only the item about it"
+    )
     why: str = Field(min_length=1, max_length=600)
 
 

@@ -1,0 +1,117 @@
+"""The live Hazard Template Library as the LLM sees it: the classes it may propose, and checks.
+
+In: the active templates the pipeline passes to the analyzer (seed and curator-written alike).
+Out: `LibraryView`: one prompt line per hazard class (category, a one-line meaning, the entity
+variables its templates bind), the set of known classes, which classes cannot bind without scene
+ids, a digest for cache keys, and `class_problems`, the repair message for a class the library
+does not hold. A curator's new class is therefore offered on the very next request.
+Fails: never; an empty library gives an empty view, and then no class can be checked (every
+hazard stays unbound and the gate defers with R2).
+"""
+
+from __future__ import annotations
+
+import difflib
+import hashlib
+from collections import defaultdict
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from app.adapters.llm.schemas import ENTITY_NAMES, MatrixHazard
+from app.domain.models import HazardTemplate, TemplateStatus, VariableType
+
+_MEANING_CHARS = 100
+_BINDABLE = {VariableType.OBJECT, VariableType.PERSON, VariableType.ROOM, VariableType.ENTITY}
+
+
+def _needed_entities(template: HazardTemplate) -> frozenset[str]:
+    return frozenset(
+        v.name for v in template.variables if v.type in _BINDABLE and v.default is None
+    )
+
+
+def _meaning(group: Sequence[HazardTemplate]) -> str:
+    # The templates' titles name the situations a class covers, in a few words each; their
+    # descriptions would triple the prompt for little the class name does not already say.
+    titles = list(dict.fromkeys(" ".join(t.name.split()) for t in group))
+    line = "; ".join(titles)
+    if len(line) > _MEANING_CHARS:
+        line = line[: _MEANING_CHARS - 1].rstrip(" ;,") + "…"
+    return line
+
+
+@dataclass(frozen=True)
+class LibraryView:
+    """What the analyzer tells the model about the library and checks its answers against."""
+
+    lines: tuple[str, ...]
+    classes: frozenset[str]
+    needs_ids: frozenset[str]
+    """Classes none of whose templates binds without at least one scene id."""
+
+    @classmethod
+    def of(cls, templates: Iterable[HazardTemplate]) -> LibraryView:
+        """Build the view of the active templates.
+
+        Args:
+            templates: the library as the pipeline passed it.
+
+        Returns:
+            The view; classes in category order, then alphabetically.
+        """
+        by_class: dict[str, list[HazardTemplate]] = defaultdict(list)
+        for template in templates:
+            if template.status is TemplateStatus.ACTIVE:
+                by_class[template.hazard_class].append(template)
+        lines: list[str] = []
+        needs_ids: set[str] = set()
+        category = ""
+        for hazard_class in sorted(by_class, key=lambda c: (by_class[c][0].category.value, c)):
+            # Templates matched by the task before the always-on baseline: they say more.
+            group = sorted(by_class[hazard_class],
+                           key=lambda t: (t.applies.value != "matched", t.id))
+            needed = [_needed_entities(t) for t in group]
+            if all(needed):
+                needs_ids.add(hazard_class)
+            names = sorted(set().union(*needed) & set(ENTITY_NAMES))
+            if group[0].category.value != category:
+                category = group[0].category.value
+                lines.append(f"{category}:")
+            binds = f" [{', '.join(names)}]" if names else ""
+            lines.append(f"- {hazard_class}: {_meaning(group)}{binds}")
+        return cls(tuple(lines), frozenset(by_class), frozenset(needs_ids))
+
+    def prompt_text(self) -> str:
+        """The class list for the system prompt."""
+        return "\n".join(self.lines) or "- (the library is empty: every class is new)"
+
+    @property
+    def digest(self) -> str:
+        """A short digest of the class list, part of the analysis cache key."""
+        return hashlib.sha256("\n".join(self.lines).encode()).hexdigest()[:12]
+
+    def class_problems(self, hazards: Sequence[MatrixHazard]) -> list[str]:
+        """Why some hazards' classes cannot be used as written (empty when all can).
+
+        A class outside the library is accepted only when the model marks it `new_class`,
+        so a misspelling is sent back for repair instead of deferring as a library gap.
+
+        Args:
+            hazards: one level's hazards.
+
+        Returns:
+            One problem per unusable class, with the closest library classes.
+        """
+        if not self.classes:
+            return []
+        problems: list[str] = []
+        for number, hazard in enumerate(hazards):
+            if hazard.hazard_class in self.classes or hazard.new_class:
+                continue
+            close = difflib.get_close_matches(hazard.hazard_class, sorted(self.classes), n=3)
+            hint = f" (closest: {', '.join(close)})" if close else ""
+            problems.append(
+                f"hazards[{number}].hazard_class = {hazard.hazard_class!r} is not a class of the "
+                f"library{hint}; use a listed class, or set new_class to true if none fits"
+            )
+        return problems
