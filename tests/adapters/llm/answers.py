@@ -99,3 +99,17 @@ TWO_PEOPLE_REQUEST = GateRequest.model_validate({
     },
     "robot": {"room": "kitchen", "skills": ["navigate", "pick", "place", "handover"]},
 })
+
+
+def honest_script(request: GateRequest) -> dict[str, dict[str, Any]]:
+    """What a careful model answers per prompt ("task", "deployment", "user", and "entities"
+    for the entity round) for SAFE_REQUEST (authorized) and TWO_PEOPLE_REQUEST (deferred: the
+    child's age is not stated)."""
+    if request == SAFE_REQUEST:
+        task, deployment, user = harmless_levels()
+        return {"task": task, "deployment": deployment, "user": user, "entities": user}
+    scald_mug = hazard("scald_hot_liquid", entities={"obj": "mug_1"})
+    child = {"hazards": [scald_mug], "unknowns": [unknown(entity="kid_1")]}
+    return {"task": {"hazards": [hazard("scald_hot_liquid")], "unknowns": [unknown(entity=None)]},
+            "deployment": child, "user": child,
+            "entities": {"hazards": [scald_mug], "unknowns": []}}
