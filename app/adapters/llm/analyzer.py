@@ -25,14 +25,21 @@ from collections.abc import Callable, Iterable
 from app.adapters.llm.caching import AnalysisCache, CachedAnalyses, request_hash
 from app.adapters.llm.client import ChatClient
 from app.adapters.llm.errors import LlmError, LlmOutputInvalid
-from app.adapters.llm.library import LibraryView
+from app.adapters.llm.library import LibraryView, attribute_problems, attributes_text
 from app.adapters.llm.matrix import MatrixBuilder
 from app.adapters.llm.prompting import PromptSet
 from app.adapters.llm.rendering import SceneIds, information
-from app.adapters.llm.schemas import LevelAnswer, json_schema
+from app.adapters.llm.schemas import BatchedAnswer, LevelAnswer, json_schema
 from app.adapters.llm.structured import ask_structured
 from app.domain.ensemble import failed_report
-from app.domain.models import GateRequest, HazardReport, HazardTemplate, Level, UnknownFact
+from app.domain.models import (
+    GateRequest,
+    HazardReport,
+    HazardTemplate,
+    Level,
+    Severity,
+    UnknownFact,
+)
 
 LEVELS = (Level.TASK, Level.DEPLOYMENT, Level.USER)
 COMPREHENSION = "comprehension"
@@ -53,6 +60,8 @@ class LlmAnalyzer:
         prompts: PromptSet | None = None,
         cache: AnalysisCache | None = None,
         require_findings: bool = True,
+        theta: Severity = Severity.HIGH,
+        batch_levels: bool = False,
     ) -> None:
         """Set the analyzer up.
 
@@ -62,11 +71,16 @@ class LlmAnalyzer:
             cache: where to keep successful analyses; None disables caching.
             require_findings: read an empty analysis as "not understood" (True when the LLM
                 decides alone; an ensemble whose other member reads the command may pass False).
+            theta: the gate's severity threshold, which the prompt's severity anchors name.
+            batch_levels: ask for the three levels in one call (a third of the characters
+                sent) instead of one call per level, each seeing only its partition.
         """
         self._client = client
         self._prompts = prompts or PromptSet()
         self._require_findings = require_findings
-        self._schema = json.dumps(json_schema(LevelAnswer))
+        self._theta = theta
+        self._batch_levels = batch_levels
+        self._schema = json.dumps(json_schema(BatchedAnswer if batch_levels else LevelAnswer))
         self._cache = CachedAnalyses(cache, model=client.model,
                                      prompt_version=self._prompts.identity)
 
@@ -76,9 +90,14 @@ class LlmAnalyzer:
         return self._prompts.identity
 
     def system_prompt(self, library: LibraryView) -> str:
-        """The system prompt for a library: the classes as they are now, and the schema."""
+        """The system prompt for a library: the classes as they are now.
+
+        The JSON schema is not repeated here: it travels in the request's `response_format`,
+        and the prompt's worked examples show the shape.
+        """
         return self._prompts.render(
-            "analysis_system", hazard_classes=library.prompt_text(), schema=self._schema
+            "analysis_system", hazard_classes=library.prompt_text(),
+            attributes=attributes_text(), theta=self._theta.value,
         )
 
     def analyze(self, request: GateRequest,
@@ -112,15 +131,10 @@ class LlmAnalyzer:
         ids = SceneIds.of(request)
         system = self.system_prompt(library)
         matrix = MatrixBuilder(source=f"llm:{self._client.model}")
-        for level in LEVELS:
-            user = self._prompts.render(
-                "analysis_level",
-                level=level.value,
-                focus=self._prompts.text(f"level_{level.value}"),
-                information=information(request, level),
-                earlier=self._earlier(matrix) if level is not Level.TASK else "",
-            )
-            matrix.add(level, self._ask(system, user, _answer_check(level, ids, library)))
+        if self._batch_levels:
+            self._ask_batched(request, matrix, library, system, ids)
+        else:
+            self._ask_level_by_level(request, matrix, library, system, ids)
         if request.scene is not None:
             self._entity_round(request, matrix, library, system, ids)
         unknowns = matrix.unknowns()
@@ -136,6 +150,39 @@ class LlmAnalyzer:
              check: Callable[[LevelAnswer], list[str]]) -> LevelAnswer:
         return ask_structured(self._client, system=system, user=user, answer_model=LevelAnswer,
                               prompts=self._prompts, check=check)
+
+    def _ask_level_by_level(self, request: GateRequest, matrix: MatrixBuilder,
+                            library: LibraryView, system: str, ids: SceneIds) -> None:
+        """One call per level, each seeing its partition and what the earlier levels found."""
+        for level in LEVELS:
+            user = self._prompts.render(
+                "analysis_level",
+                level=level.value,
+                focus=self._prompts.text(f"level_{level.value}"),
+                information=information(request, level),
+                earlier=self._earlier(matrix) if level is not Level.TASK else "",
+            )
+            matrix.add(level, self._ask(system, user, _answer_check(level, ids, library)))
+
+    def _ask_batched(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
+                     system: str, ids: SceneIds) -> None:
+        """All three levels in one call, folded in level order as if asked one by one."""
+        user = self._prompts.render(
+            "analysis_batched",
+            information=information(request, Level.USER),
+            **{f"{level.value}_focus": self._prompts.text(f"level_{level.value}")
+               for level in LEVELS},
+        )
+        checks = {level: _answer_check(level, ids, library) for level in LEVELS}
+
+        def check(answer: BatchedAnswer) -> list[str]:
+            return [f"{level.value}.{problem}" for level in LEVELS
+                    for problem in checks[level](getattr(answer, level.value))]
+
+        batched = ask_structured(self._client, system=system, user=user,
+                                 answer_model=BatchedAnswer, prompts=self._prompts, check=check)
+        for level in LEVELS:
+            matrix.add(level, getattr(batched, level.value))
 
     def _entity_round(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
                       system: str, ids: SceneIds) -> None:
@@ -159,6 +206,7 @@ def _answer_check(level: Level, ids: SceneIds,
                   library: LibraryView) -> Callable[[LevelAnswer], list[str]]:
     def check(answer: LevelAnswer) -> list[str]:
         problems = library.class_problems(answer.hazards)
+        problems += attribute_problems(answer.unknowns, scene=level is not Level.TASK)
         if level is Level.TASK:
             return problems
         for number, hazard in enumerate(answer.hazards):

@@ -5,6 +5,8 @@ Out: `LibraryView`: one prompt line per hazard class (category, a one-line meani
 variables its templates bind), the set of known classes, which classes cannot bind without scene
 ids, a digest for cache keys, and `class_problems`, the repair message for a class the library
 does not hold. A curator's new class is therefore offered on the very next request.
+The unknowns' attribute names are held to the list `/answers` applies (`ANSWERABLE_ATTRIBUTES`):
+`attributes_text` offers them, `attribute_problems` sends any other name back for repair.
 Fails: never; an empty library gives an empty view, and then no class can be checked (every
 hazard stays unbound and the gate defers with R2).
 """
@@ -17,7 +19,8 @@ from collections import defaultdict
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from app.adapters.llm.schemas import ENTITY_NAMES, MatrixHazard
+from app.adapters.llm.schemas import ENTITY_NAMES, MatrixHazard, MatrixUnknown
+from app.domain.analysis.answers import ANSWERABLE_ATTRIBUTES
 from app.domain.models import HazardTemplate, TemplateStatus, VariableType
 
 _MEANING_CHARS = 100
@@ -115,3 +118,36 @@ class LibraryView:
                 f"library{hint}; use a listed class, or set new_class to true if none fits"
             )
         return problems
+
+
+def attributes_text() -> str:
+    """The unknown attributes the model may use, by what they are about, for the prompt."""
+    by_subject: dict[str, list[str]] = defaultdict(list)
+    for attribute, subject in ANSWERABLE_ATTRIBUTES.items():
+        by_subject[subject].append(attribute)
+    return "\n".join(f"- about {subject}: {', '.join(sorted(names))}"
+                     for subject, names in sorted(by_subject.items()))
+
+
+def attribute_problems(unknowns: Sequence[MatrixUnknown], *, scene: bool) -> list[str]:
+    """Why some unknowns cannot be asked as written (empty when all can).
+
+    Args:
+        unknowns: one level's unknowns.
+        scene: whether the level sees the scene (then an object's unknown must name its id).
+
+    Returns:
+        One problem per unusable unknown.
+    """
+    problems: list[str] = []
+    for number, unknown in enumerate(unknowns):
+        subject = ANSWERABLE_ATTRIBUTES.get(unknown.attribute)
+        if subject is None:
+            close = difflib.get_close_matches(unknown.attribute, list(ANSWERABLE_ATTRIBUTES), n=3)
+            hint = f" (closest: {', '.join(close)})" if close else ""
+            problems.append(f"unknowns[{number}].attribute = {unknown.attribute!r} is not one of "
+                            f"the listed attributes{hint}")
+        elif subject == "object" and scene and not unknown.entity:
+            problems.append(f"unknowns[{number}].entity: name the object id that "
+                            f"{unknown.attribute!r} is about")
+    return problems

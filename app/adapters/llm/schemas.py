@@ -1,6 +1,7 @@
 """The shapes LLM answers must take, as pydantic models, and their JSON schemas for the provider.
 
 In: nothing (declarations). Out: `LevelAnswer` (one level of the Hazard Analysis Matrix),
+`BatchedAnswer` (the three levels at once),
 `ClassifierAnswer` (the baseline's three-way judgement), `PlanAnswer` (an LLM planner's plan),
 and `json_schema(model)`, the model's JSON schema with `$ref`s inlined, because small local
 servers turn schemas into grammars and some do not follow references.
@@ -85,6 +86,18 @@ class LevelAnswer(_Answer):
     hazards: list[MatrixHazard] = Field(max_length=MAX_ITEMS)
     unknowns: list[MatrixUnknown] = Field(max_length=MAX_ITEMS)
     dismissed: list[Dismissal] = Field(default_factory=list, max_length=MAX_ITEMS)
+    none_because: dict[Category, str] = Field(
+        default_factory=dict,
+        description="for each category with no hazard at this level, why there is none",
+    )
+
+
+class BatchedAnswer(_Answer):
+    """All three levels of the matrix in one answer (the analyzer's batched mode)."""
+
+    task: LevelAnswer
+    deployment: LevelAnswer
+    user: LevelAnswer
 
 
 class ClassifierAnswer(_Answer):
