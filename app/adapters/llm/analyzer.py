@@ -187,10 +187,12 @@ class LlmAnalyzer:
     def _entity_round(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
                       system: str, ids: SceneIds) -> None:
         """Send hazards that still lack the scene ids their templates bind back for them."""
-        vague = matrix.without_ids(library.needs_ids)
+        vague = matrix.without_ids(library.lacks_ids)
         if not vague:
             return
-        listed = "\n".join(f"- {p.category.value}/{p.hazard_class}: {p.mechanism}" for p in vague)
+        listed = "\n".join(f"- {p.category.value}/{p.hazard_class} (given: "
+                           f"{', '.join(sorted(p.entities)) or 'no ids'}): {p.mechanism}"
+                           for p in vague)
         user = self._prompts.render("analysis_entities", information=information(
             request, Level.USER), hazards=listed)
         try:

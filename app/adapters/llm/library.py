@@ -2,9 +2,10 @@
 
 In: the active templates the pipeline passes to the analyzer (seed and curator-written alike).
 Out: `LibraryView`: one prompt line per hazard class (category, a one-line meaning, the entity
-variables its templates bind), the set of known classes, which classes cannot bind without scene
-ids, a digest for cache keys, and `class_problems`, the repair message for a class the library
-does not hold. A curator's new class is therefore offered on the very next request.
+variables its templates bind), the set of known classes, whether a hazard's entities bind any of
+its class's templates (`lacks_ids`), a digest for cache keys, and `class_problems`, the repair
+message for a class the library does not hold. A curator's new class is offered on the very next
+request.
 The unknowns' attribute names are held to the list `/answers` applies (`ANSWERABLE_ATTRIBUTES`):
 `attributes_text` offers them, `attribute_problems` sends any other name back for repair.
 Fails: never; an empty library gives an empty view, and then no class can be checked (every
@@ -16,7 +17,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 from collections import defaultdict
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 from app.adapters.llm.schemas import ENTITY_NAMES, MatrixHazard, MatrixUnknown
@@ -49,8 +50,8 @@ class LibraryView:
 
     lines: tuple[str, ...]
     classes: frozenset[str]
-    needs_ids: frozenset[str]
-    """Classes none of whose templates binds without at least one scene id."""
+    needed: dict[str, tuple[frozenset[str], ...]]
+    """Per class, the entity variables each of its templates needs filled."""
 
     @classmethod
     def of(cls, templates: Iterable[HazardTemplate]) -> LibraryView:
@@ -67,22 +68,34 @@ class LibraryView:
             if template.status is TemplateStatus.ACTIVE:
                 by_class[template.hazard_class].append(template)
         lines: list[str] = []
-        needs_ids: set[str] = set()
+        needed_by_class: dict[str, tuple[frozenset[str], ...]] = {}
         category = ""
         for hazard_class in sorted(by_class, key=lambda c: (by_class[c][0].category.value, c)):
             # Templates matched by the task before the always-on baseline: they say more.
             group = sorted(by_class[hazard_class],
                            key=lambda t: (t.applies.value != "matched", t.id))
             needed = [_needed_entities(t) for t in group]
-            if all(needed):
-                needs_ids.add(hazard_class)
+            needed_by_class[hazard_class] = tuple(needed)
             names = sorted(set().union(*needed) & set(ENTITY_NAMES))
             if group[0].category.value != category:
                 category = group[0].category.value
                 lines.append(f"{category}:")
             binds = f" [{', '.join(names)}]" if names else ""
             lines.append(f"- {hazard_class}: {_meaning(group)}{binds}")
-        return cls(tuple(lines), frozenset(by_class), frozenset(needs_ids))
+        return cls(tuple(lines), frozenset(by_class), needed_by_class)
+
+    def lacks_ids(self, hazard_class: str, entities: Mapping[str, str]) -> bool:
+        """Whether a hazard of a library class cannot bind any template with these entities.
+
+        Args:
+            hazard_class: the hazard's class.
+            entities: the entity variables it fills.
+
+        Returns:
+            True when the class has templates and each needs an entity the hazard lacks.
+        """
+        needed = self.needed.get(hazard_class, ())
+        return bool(needed) and not any(n <= entities.keys() for n in needed)
 
     def prompt_text(self) -> str:
         """The class list for the system prompt."""

@@ -6,15 +6,16 @@ Identity: a hazard is its class and the scene ids it involves; an unknown is its
 the entity it is about. A later entry with the same identity supersedes the earlier one (it saw
 more) but keeps the level where the item first appeared, and an unknown's `critical` flag is
 never lowered by a later level: only an explicit dismissal, with its reason, removes an item.
-An entry without ids (the task level has no scene) is refined by any later entry of the same
-class or attribute that has them, passing on its level and criticality. Anything a later level
-neither restates nor dismisses stays, since silence is not evidence of safety.
+An entry without ids (the task level has no scene), or a hazard with fewer ids, is refined by a
+later entry of the same class or attribute that has them, passing on its level and criticality.
+Anything a later level neither restates nor dismisses stays: silence is not evidence of safety.
 `earlier_summary` renders what the previous levels found, for the next level's prompt.
 Fails: never.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from app.adapters.llm.schemas import Dismissal, LevelAnswer, MatrixHazard, MatrixUnknown
@@ -63,13 +64,13 @@ class MatrixBuilder:
     def _add_hazard(self, level: Level, hazard: MatrixHazard) -> None:
         # Without a scene there are no ids to bind, whatever the model wrote.
         entities = hazard.entities.as_bindings() if level is not Level.TASK else {}
-        key: HazardKey = (hazard.hazard_class, frozenset(entities.items()))
-        first = self._hazards.get(key)
-        vague_key: HazardKey = (hazard.hazard_class, frozenset())
-        if entities and vague_key in self._hazards:
-            vague = self._hazards.pop(vague_key)
-            first = min((p for p in (first, vague) if p is not None),
-                        key=lambda p: _LEVEL_ORDER.index(p.level))
+        items = frozenset(entities.items())
+        key: HazardKey = (hazard.hazard_class, items)
+        # The same hazard with fewer ids (none, or some) is this one, now better specified.
+        refined = [k for k in self._hazards if k[0] == hazard.hazard_class and k[1] < items]
+        earlier = [p for p in (self._hazards.get(key), *(self._hazards.pop(k) for k in refined))
+                   if p is not None]
+        first = min(earlier, key=lambda p: _LEVEL_ORDER.index(p.level)) if earlier else None
         self._hazards[key] = HazardProposal(
             level=first.level if first is not None else level,
             category=hazard.category,
@@ -109,17 +110,17 @@ class MatrixBuilder:
         """Every unknown in the matrix, each once."""
         return tuple(self._unknowns.values())
 
-    def without_ids(self, classes: frozenset[str]) -> tuple[HazardProposal, ...]:
-        """Hazards still lacking scene ids whose class cannot bind without them.
+    def without_ids(self, lacks_ids: Callable[[str, Mapping[str, str]], bool]
+                    ) -> tuple[HazardProposal, ...]:
+        """Hazards whose scene ids do not fill any template of their class.
 
         Args:
-            classes: the classes none of whose templates binds without a scene id.
+            lacks_ids: whether a class's templates need more than the given entities.
 
         Returns:
             The hazards to send back for their ids.
         """
-        return tuple(p for p in self._hazards.values()
-                     if not p.entities and p.hazard_class in classes)
+        return tuple(p for p in self._hazards.values() if lacks_ids(p.hazard_class, p.entities))
 
     def earlier_summary(self) -> tuple[str, str]:
         """The hazards and unknowns found so far, one per line, for the next level's prompt."""

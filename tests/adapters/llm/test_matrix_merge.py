@@ -123,6 +123,19 @@ class TestEntityRound:
         assert [h.proposal.entities for h in result.binding.bound] == [{"obj": "mug_1"}]
         assert result.decision.decision is Decision.AUTHORIZE
 
+    def test_a_hazard_with_some_ids_but_not_those_its_templates_bind_is_sent_back(
+        self, llm_server: ScriptedServer, make_client: ClientFactory
+    ) -> None:
+        person_only = hazard("scald_hot_liquid", entities={"person": "guest_1"})
+        both = hazard("scald_hot_liquid", entities={"obj": "mug_1", "person": "guest_1"})
+        llm_server.answer_json(_level(SCALD), _level(person_only), _level(person_only),
+                               _level(both))
+        result = _gate(COFFEE_REQUEST, make_client())
+        assert "(given: person)" in llm_server.requests[3]["messages"][-1]["content"]
+        assert [p.entities for p in result.report.proposals] == [
+            {"obj": "mug_1", "person": "guest_1"}]
+        assert result.binding.unbound == ()
+
     def test_ids_never_given_defer_saying_the_entities_are_missing(
         self, llm_server: ScriptedServer, make_client: ClientFactory
     ) -> None:
