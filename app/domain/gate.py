@@ -10,7 +10,8 @@ to `authorize` is that no earlier rule matched.
     R1   unpreventable and severity >= theta            -> reject
     R1b  preventability unknown and severity >= theta   -> defer (clarify)
     R2   any hazard with no template (or without the
-         entities its template binds)                 -> defer (extend_library)
+         entities its template binds)                   -> defer (extend_library), asking the
+                                                           question of a critical unknown if any
     R3   any critical unknown                           -> defer (clarify)
     R3b  severity critical and confidence uncertain     -> defer (clarify)
     R4   otherwise                                      -> authorize
@@ -123,18 +124,23 @@ def decide(
             reason=_reason("may or may not be preventable", unclear),
         )
 
+    critical_unknowns = [u for u in unknowns if u.critical]
     if unbound:
+        # The library gap decides, but a question another finding raised (an ensemble's
+        # symbolic member, say) is still asked rather than lost behind it.
         return GateDecision(
             decision=Decision.DEFER,
             rule=Rule.R2,
             defer_kind=DeferKind.EXTEND_LIBRARY,
+            question=_question_about_unknown(critical_unknowns[0]) if critical_unknowns
+            else None,
             trigger_hazards=tuple(unbound),
+            trigger_unknowns=tuple(critical_unknowns),
             reason=_reason("has a template but not the scene entities it binds"
                            if unbound[0] in entities_missing
                            else "has no template in the library", list(unbound)),
         )
 
-    critical_unknowns = [u for u in unknowns if u.critical]
     if critical_unknowns:
         return GateDecision(
             decision=Decision.DEFER,
