@@ -85,6 +85,9 @@ class TestCuratorClassReachesTheModel:
                                   ApiKeyRole.CURATOR, "curator")
         curator = {"Authorization": f"Bearer {secret}"}
         assert llm_app.post("/templates", json=CURATED, headers=curator).status_code == 201
+        llm_server.answer_json(*_levels(new_class=True))
+        llm_app.post("/gate", json=LAPTOP_REQUEST)
+        assert f"- {NEW_CLASS}:" not in _system_prompt(llm_server)  # a draft is not offered
         activated = llm_app.post(f"/templates/{CURATED['id']}/activate", headers=curator)
         assert activated.status_code == 200, activated.json()
 
