@@ -67,6 +67,19 @@ class TestGateOverHttp:
         assert answer.status_code == 200
         assert answer.json()["decision"] == "authorize"
 
+    def test_batched_levels_take_one_call(
+        self, tmp_path: Path, llm_server: ScriptedServer
+    ) -> None:
+        settings = Settings(database_url=f"sqlite:///{tmp_path / 'batched.db'}", analyzer="llm",
+                            llm_model=SCRIPTED_MODEL, llm_api_base=llm_server.base_url,
+                            llm_api_key="sk-scripted", llm_batch_levels=True)
+        task, deployment, user = harmless_levels()
+        llm_server.answer_json({"task": task, "deployment": deployment, "user": user})
+        with TestClient(create_app(settings)) as client:
+            body = client.post("/gate", json=REQUEST_JSON).json()
+        assert body["decision"] == "authorize"
+        assert len(llm_server.requests) == 1
+
     def test_an_empty_llm_analysis_is_not_understood(
         self, llm_gate: TestClient, llm_server: ScriptedServer
     ) -> None:
