@@ -115,16 +115,19 @@ class LlmAnalyzer:
         """
         library = LibraryView.of(templates)
         key = CachedAnalyses.key(request, library=library.digest, schema=self._schema,
-                                 client=self._client.identity)
-        cached = self._cache.get(key)
-        if cached is not None:
-            return cached
-        try:
-            report = self._analyze_levels(request, library)
-        except LlmError as error:
-            _log.warning("LLM analysis failed, deferring: %s", error.detail)
-            return failed_report(self.name, f"{type(error).__name__}: {error.detail[:200]}")
-        self._cache.put(key, report)
+                                 client=f"{self._client.identity}|theta={self._theta.value}")
+        report = self._cache.get(key)
+        if report is None:
+            try:
+                report = self._analyze_levels(request, library)
+            except LlmError as error:
+                _log.warning("LLM analysis failed, deferring: %s", error.detail)
+                return failed_report(self.name, f"{type(error).__name__}: {error.detail[:200]}")
+            self._cache.put(key, report)
+        # Applied to cached reports too: the cache holds what the model found, whichever mode
+        # (alone or in an ensemble) stored it.
+        if self._require_findings and not report.proposals and not report.unknowns:
+            return report.model_copy(update={"unknowns": (_not_understood(),)})
         return report
 
     def _analyze_levels(self, request: GateRequest, library: LibraryView) -> HazardReport:
@@ -137,10 +140,8 @@ class LlmAnalyzer:
             self._ask_level_by_level(request, matrix, library, system, ids)
         if request.scene is not None:
             self._entity_round(request, matrix, library, system, ids)
-        unknowns = matrix.unknowns()
-        if self._require_findings and not matrix.proposals() and not unknowns:
-            unknowns = (_not_understood(),)
-        return HazardReport(proposals=matrix.proposals(), unknowns=unknowns, analyzer=self.name)
+        return HazardReport(proposals=matrix.proposals(), unknowns=matrix.unknowns(),
+                            analyzer=self.name)
 
     def _earlier(self, matrix: MatrixBuilder) -> str:
         hazards, unknowns = matrix.earlier_summary()

@@ -112,3 +112,13 @@ class TestCacheKey:
         body = COFFEE_REQUEST.model_dump(mode="json", by_alias=True, exclude_none=True)
         padded = GateRequest.model_validate({**body, "tracking_id": "abc-123"})
         assert request_hash(padded) == request_hash(COFFEE_REQUEST)
+
+    def test_an_empty_analysis_cached_by_an_ensemble_member_is_still_not_understood_alone(
+        self, repository: Repository, llm_server: ScriptedServer, make_client: ClientFactory
+    ) -> None:
+        llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL, EMPTY_LEVEL)
+        member = LlmAnalyzer(make_client(), cache=repository, require_findings=False)
+        assert member.analyze(SAFE_REQUEST).unknowns == ()
+        alone = LlmAnalyzer(make_client(), cache=repository).analyze(SAFE_REQUEST)
+        assert len(llm_server.requests) == 3  # served from the cache
+        assert [u.attribute for u in alone.unknowns] == ["comprehension"]
