@@ -202,7 +202,10 @@ class LlmAnalyzer:
             # The hazards stay without ids, so unbound: the gate defers (R2, entities missing).
             _log.warning("LLM gave no usable entities, hazards stay unbound: %s", error.detail)
             return
-        matrix.add(Level.USER, answer)
+        # This round was asked about these hazards only: it may dismiss them, nothing else.
+        asked = {p.hazard_class for p in vague}
+        kept = [d for d in answer.dismissed if d.kind == "hazard" and d.name in asked]
+        matrix.add(Level.USER, answer.model_copy(update={"dismissed": kept}))
 
 
 def _answer_check(level: Level, ids: SceneIds,

@@ -136,6 +136,17 @@ class TestEntityRound:
             {"obj": "mug_1", "person": "guest_1"}]
         assert result.binding.unbound == ()
 
+    def test_the_entity_round_cannot_dismiss_what_it_was_not_asked_about(
+        self, llm_server: ScriptedServer, make_client: ClientFactory
+    ) -> None:
+        child = unknown(entity="kid_1", critical=True)
+        settle = {"kind": "unknown", "name": "age_group", "why": "not needed"}
+        llm_server.answer_json(_level(SCALD), _level(unknowns=(child,)), _level(unknowns=(child,)),
+                               _level(SCALD_MUG, dismissed=(settle,)))
+        result = _gate(TWO_PEOPLE_REQUEST, make_client())
+        assert [u.entity for u in result.report.unknowns] == ["kid_1"]
+        assert result.decision.rule is Rule.R3
+
     def test_ids_never_given_defer_saying_the_entities_are_missing(
         self, llm_server: ScriptedServer, make_client: ClientFactory
     ) -> None:
