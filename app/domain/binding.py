@@ -65,6 +65,8 @@ class UnboundHazard(BaseModel):
 
     proposal: HazardProposal
     reason: str
+    entities_missing: bool = False
+    """The class has templates, but the proposal lacks the entities they bind."""
 
 
 class BindingResult(BaseModel):
@@ -144,7 +146,8 @@ def bind(report: HazardReport, index: TemplateIndex) -> BindingResult:
         if matches:
             bound.append(BoundHazard(proposal=proposal, matches=tuple(matches)))
         else:
-            unbound.append(UnboundHazard(proposal=proposal, reason="; ".join(misses)))
+            unbound.append(UnboundHazard(proposal=proposal, reason="; ".join(misses),
+                                         entities_missing=True))
     return BindingResult(bound=tuple(bound), unbound=tuple(unbound))
 
 

@@ -9,7 +9,9 @@ to `authorize` is that no earlier rule matched.
 
     R1   unpreventable and severity >= theta            -> reject
     R1b  preventability unknown and severity >= theta   -> defer (clarify)
-    R2   any hazard with no template                    -> defer (extend_library)
+    R2   any hazard with no template (or without the
+         entities its template binds)                   -> defer (extend_library), asking the
+                                                           question of a critical unknown if any
     R3   any critical unknown                           -> defer (clarify)
     R3b  severity critical and confidence uncertain     -> defer (clarify)
     R4   otherwise                                      -> authorize
@@ -81,6 +83,8 @@ def decide(
     unbound: Sequence[HazardProposal],
     unknowns: Sequence[UnknownFact],
     policy: GatePolicy = DEFAULT_POLICY,
+    *,
+    entities_missing: Sequence[HazardProposal] = (),
 ) -> GateDecision:
     """Run the cascade R1, R1b, R2, R3, R3b, R4 and return the first rule that matches.
 
@@ -90,6 +94,8 @@ def decide(
             severe whether or not we have a template for it).
         unknowns: what Stage 1 found it does not know.
         policy: theta and friends.
+        entities_missing: the unbound hazards whose class has templates but which lack the
+            entities those templates bind (R2 then says so rather than "no template").
 
     Returns:
         The decision, the rule that fired, and its triggers.
@@ -118,16 +124,23 @@ def decide(
             reason=_reason("may or may not be preventable", unclear),
         )
 
+    critical_unknowns = [u for u in unknowns if u.critical]
     if unbound:
+        # The library gap decides, but a question another finding raised (an ensemble's
+        # symbolic member, say) is still asked rather than lost behind it.
         return GateDecision(
             decision=Decision.DEFER,
             rule=Rule.R2,
             defer_kind=DeferKind.EXTEND_LIBRARY,
+            question=_question_about_unknown(critical_unknowns[0]) if critical_unknowns
+            else None,
             trigger_hazards=tuple(unbound),
-            reason=_reason("has no template in the library", list(unbound)),
+            trigger_unknowns=tuple(critical_unknowns),
+            reason=_reason("has a template but not the scene entities it binds"
+                           if unbound[0] in entities_missing
+                           else "has no template in the library", list(unbound)),
         )
 
-    critical_unknowns = [u for u in unknowns if u.critical]
     if critical_unknowns:
         return GateDecision(
             decision=Decision.DEFER,

@@ -105,6 +105,7 @@ def run_gate(
         [h.proposal for h in binding.unbound],
         report.unknowns,
         policy,
+        entities_missing=[h.proposal for h in binding.unbound if h.entities_missing],
     )
     timings["decision"] = (clock() - started) * 1000
 

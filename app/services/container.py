@@ -111,9 +111,14 @@ def build_analyzer(settings: Settings, cache: AnalysisCache | None = None) -> An
     """
     if settings.analyzer == "symbolic":
         return SymbolicAnalyzer(reject_from=settings.theta)
-    llm = LlmAnalyzer(LitellmClient(llm_config(settings)), cache=cache)
+    client = LitellmClient(llm_config(settings))
     if settings.analyzer == "llm":
-        return llm
+        return LlmAnalyzer(client, cache=cache, theta=settings.theta,
+                           batch_levels=settings.llm_batch_levels)
+    # The symbolic member reads the command (and fails closed when it cannot), so an LLM that
+    # finds nothing adds nothing rather than holding every request back.
+    llm = LlmAnalyzer(client, cache=cache, require_findings=False, theta=settings.theta,
+                      batch_levels=settings.llm_batch_levels)
     return EnsembleAnalyzer([SymbolicAnalyzer(reject_from=settings.theta), llm])
 
 

@@ -112,6 +112,12 @@ class TestDecide:
         result = decide([], [hazard(hazard_class="unmapped")], [unknown()])
         assert result.rule is Rule.R2
 
+    def test_r2_still_asks_the_question_of_a_critical_unknown(self) -> None:
+        result = decide([], [hazard(hazard_class="unmapped")], [unknown()])
+        assert (result.rule, result.question) == (Rule.R2, "How old is the guest?")
+        assert result.trigger_unknowns == (unknown(),)
+        assert decide([], [hazard(hazard_class="unmapped")], []).question is None
+
     def test_every_combination_gets_one_decision_and_authorize_only_by_r4(self) -> None:
         for severity, prevent, conf, crit in itertools.product(
             Severity, Preventability, Confidence, (True, False)

@@ -1,74 +1,51 @@
 """Stage 1 by an LLM: the Hazard Analysis Matrix filled level by level through litellm.
 
-In: a `GateRequest`. The LLM is asked three times, once per information level (task: the
-command; deployment: + the scene; user: + the user and the robot), each time across the four
-categories, with what the earlier levels found, and told to report unknown properties of the
-user as unknowns instead of assuming them safe. Every answer is parsed into `LevelAnswer`,
-its entity ids checked against the scene, with one repair round (`structured.py`).
+In: a `GateRequest` and the active library. The system prompt lists the library's hazard classes
+as they are now (`library.py`), so a curator's new class is offered on the next request. The LLM
+is asked once per information level (task: the command; deployment: + the scene; user: + the
+user and the robot), each time across the four categories, with what the earlier levels found;
+the request goes in as delimited, JSON-encoded data (`rendering.py`). Every answer is parsed into
+`LevelAnswer` and checked (entity ids in the scene, classes in the library or marked new), with
+one repair round (`structured.py`). Hazards still without the scene ids their templates need go
+back once more for their ids (the entity round). Levels merge by identity (`matrix.py`).
 Out: a `HazardReport` (analyzer "llm", proposals with source "llm:<model>").
 Fails closed: any `LlmError` (timeout, connection, 5xx, 429, invalid or truncated output)
-yields a report with the critical unknown "hazard analysis unavailable" and no proposals, so
-the gate defers. Successful analyses are cached by a hash of (request, model, prompt version)
-in an optional `AnalysisCache` (the store's `Repository` is one); a cache that fails is skipped.
+yields a report with the critical unknown "hazard analysis unavailable" and no proposals. An
+analysis with no hazard and no unknown is not evidence of safety (a model that did not follow,
+or that obeyed text injected in the request, answers just that): with `require_findings` it
+becomes a critical `comprehension` unknown. Successful analyses are cached (`caching.py`).
 """
 
 from __future__ import annotations
 
-import hashlib
 import json
 import logging
 from collections.abc import Callable, Iterable
-from typing import Any, Protocol
 
-from pydantic import ValidationError
-
+from app.adapters.llm.caching import AnalysisCache, CachedAnalyses, request_hash
 from app.adapters.llm.client import ChatClient
-from app.adapters.llm.errors import LlmError
+from app.adapters.llm.errors import LlmError, LlmOutputInvalid
+from app.adapters.llm.library import LibraryView, attribute_problems, attributes_text
 from app.adapters.llm.matrix import MatrixBuilder
 from app.adapters.llm.prompting import PromptSet
 from app.adapters.llm.rendering import SceneIds, information
-from app.adapters.llm.schemas import LevelAnswer, json_schema
+from app.adapters.llm.schemas import BatchedAnswer, LevelAnswer, json_schema
 from app.adapters.llm.structured import ask_structured
 from app.domain.ensemble import failed_report
-from app.domain.errors import SafeGateError
-from app.domain.models import GateRequest, HazardReport, HazardTemplate, Level
+from app.domain.models import (
+    GateRequest,
+    HazardReport,
+    HazardTemplate,
+    Level,
+    Severity,
+    UnknownFact,
+)
 
 LEVELS = (Level.TASK, Level.DEPLOYMENT, Level.USER)
+COMPREHENSION = "comprehension"
 _log = logging.getLogger(__name__)
 
-
-class AnalysisCache(Protocol):
-    """Where analyses are kept between calls (`app.store.Repository` has these methods)."""
-
-    def get_cached_analysis(
-        self, cache_key: str, model: str, prompt_version: str
-    ) -> dict[str, Any] | None:
-        """The stored result, or None."""
-        ...
-
-    def put_cached_analysis(
-        self, cache_key: str, model: str, prompt_version: str, result: dict[str, Any]
-    ) -> None:
-        """Store a result."""
-        ...
-
-
-def request_hash(request: GateRequest) -> str:
-    """A stable digest of everything the analysis sees of a request.
-
-    Args:
-        request: the gate request.
-
-    Returns:
-        The hex SHA-256 of the request's canonical JSON.
-    """
-    canonical = json.dumps(
-        request.model_dump(mode="json", by_alias=True, exclude_none=True),
-        sort_keys=True,
-        ensure_ascii=False,
-        separators=(",", ":"),
-    )
-    return hashlib.sha256(canonical.encode()).hexdigest()
+__all__ = ["COMPREHENSION", "LEVELS", "AnalysisCache", "LlmAnalyzer", "request_hash"]
 
 
 class LlmAnalyzer:
@@ -82,6 +59,9 @@ class LlmAnalyzer:
         *,
         prompts: PromptSet | None = None,
         cache: AnalysisCache | None = None,
+        require_findings: bool = True,
+        theta: Severity = Severity.HIGH,
+        batch_levels: bool = False,
     ) -> None:
         """Set the analyzer up.
 
@@ -89,20 +69,36 @@ class LlmAnalyzer:
             client: the chat client (litellm, or a fake in tests).
             prompts: the prompt version to use (default v1).
             cache: where to keep successful analyses; None disables caching.
+            require_findings: read an empty analysis as "not understood" (True when the LLM
+                decides alone; an ensemble whose other member reads the command may pass False).
+            theta: the gate's severity threshold, which the prompt's severity anchors name.
+            batch_levels: ask for the three levels in one call (a third of the characters
+                sent) instead of one call per level, each seeing only its partition.
         """
         self._client = client
         self._prompts = prompts or PromptSet()
-        self._cache = cache
-        self._system = self._prompts.render(
-            "analysis_system",
-            hazard_classes=self._prompts.text("hazard_classes"),
-            schema=json.dumps(json_schema(LevelAnswer)),
-        )
+        self._require_findings = require_findings
+        self._theta = theta
+        self._batch_levels = batch_levels
+        self._schema = json.dumps(json_schema(BatchedAnswer if batch_levels else LevelAnswer))
+        self._cache = CachedAnalyses(cache, model=client.model,
+                                     prompt_version=self._prompts.identity)
 
     @property
     def prompt_version(self) -> str:
         """The prompt set's identity, part of the cache key."""
         return self._prompts.identity
+
+    def system_prompt(self, library: LibraryView) -> str:
+        """The system prompt for a library: the classes as they are now.
+
+        The JSON schema is not repeated here: it travels in the request's `response_format`,
+        and the prompt's worked examples show the shape.
+        """
+        return self._prompts.render(
+            "analysis_system", hazard_classes=library.prompt_text(),
+            attributes=attributes_text(), theta=self._theta.value,
+        )
 
     def analyze(self, request: GateRequest,
                 templates: Iterable[HazardTemplate] = ()) -> HazardReport:
@@ -110,87 +106,115 @@ class LlmAnalyzer:
 
         Args:
             request: the gate request.
-            templates: the active library (not yet shown to the model: its class list comes
-                from the prompt files).
+            templates: the active library; its classes are offered to the model and answers
+                are checked against them.
 
         Returns:
-            The LLM's report, from the cache when the same request, model and prompts were
-            analysed before; on any LLM failure, the fail-closed report.
+            The LLM's report, from the cache when the same request, library, model settings and
+            prompts were analysed before; on any LLM failure, the fail-closed report.
         """
-        key = request_hash(request)
-        cached = self._cached(key)
-        if cached is not None:
-            return cached
-        try:
-            report = self._analyze_levels(request)
-        except LlmError as error:
-            _log.warning("LLM analysis failed, deferring: %s", error.detail)
-            return failed_report(self.name, f"{type(error).__name__}: {error.detail[:200]}")
-        self._store(key, report)
+        library = LibraryView.of(templates)
+        key = CachedAnalyses.key(request, library=library.digest, schema=self._schema,
+                                 client=f"{self._client.identity}|theta={self._theta.value}")
+        report = self._cache.get(key)
+        if report is None:
+            try:
+                report = self._analyze_levels(request, library)
+            except LlmError as error:
+                _log.warning("LLM analysis failed, deferring: %s", error.detail)
+                return failed_report(self.name, f"{type(error).__name__}: {error.detail[:200]}")
+            self._cache.put(key, report)
+        # Applied to cached reports too: the cache holds what the model found, whichever mode
+        # (alone or in an ensemble) stored it.
+        if self._require_findings and not report.proposals and not report.unknowns:
+            return report.model_copy(update={"unknowns": (_not_understood(),)})
         return report
 
-    def _analyze_levels(self, request: GateRequest) -> HazardReport:
+    def _analyze_levels(self, request: GateRequest, library: LibraryView) -> HazardReport:
         ids = SceneIds.of(request)
+        system = self.system_prompt(library)
         matrix = MatrixBuilder(source=f"llm:{self._client.model}")
-        for rank, level in enumerate(LEVELS):
-            if rank == 0:
-                earlier = ""
-            else:
-                hazards, unknowns = matrix.earlier_summary()
-                earlier = self._prompts.render(
-                    "analysis_earlier", hazards=hazards, unknowns=unknowns
-                ) + "\n"
+        if self._batch_levels:
+            self._ask_batched(request, matrix, library, system, ids)
+        else:
+            self._ask_level_by_level(request, matrix, library, system, ids)
+        if request.scene is not None:
+            self._entity_round(request, matrix, library, system, ids)
+        return HazardReport(proposals=matrix.proposals(), unknowns=matrix.unknowns(),
+                            analyzer=self.name)
+
+    def _earlier(self, matrix: MatrixBuilder) -> str:
+        hazards, unknowns = matrix.earlier_summary()
+        return self._prompts.render("analysis_earlier", hazards=hazards, unknowns=unknowns) + "\n"
+
+    def _ask(self, system: str, user: str,
+             check: Callable[[LevelAnswer], list[str]]) -> LevelAnswer:
+        return ask_structured(self._client, system=system, user=user, answer_model=LevelAnswer,
+                              prompts=self._prompts, check=check)
+
+    def _ask_level_by_level(self, request: GateRequest, matrix: MatrixBuilder,
+                            library: LibraryView, system: str, ids: SceneIds) -> None:
+        """One call per level, each seeing its partition and what the earlier levels found."""
+        for level in LEVELS:
             user = self._prompts.render(
                 "analysis_level",
                 level=level.value,
                 focus=self._prompts.text(f"level_{level.value}"),
                 information=information(request, level),
-                earlier=earlier,
+                earlier=self._earlier(matrix) if level is not Level.TASK else "",
             )
-            answer = ask_structured(
-                self._client,
-                system=self._system,
-                user=user,
-                answer_model=LevelAnswer,
-                prompts=self._prompts,
-                check=_entity_check(level, ids),
-            )
-            matrix.add(level, answer)
-        return HazardReport(
-            proposals=matrix.proposals(), unknowns=matrix.unknowns(), analyzer=self.name
+            matrix.add(level, self._ask(system, user, _answer_check(level, ids, library)))
+
+    def _ask_batched(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
+                     system: str, ids: SceneIds) -> None:
+        """All three levels in one call, folded in level order as if asked one by one."""
+        user = self._prompts.render(
+            "analysis_batched",
+            information=information(request, Level.USER),
+            **{f"{level.value}_focus": self._prompts.text(f"level_{level.value}")
+               for level in LEVELS},
         )
+        checks = {level: _answer_check(level, ids, library) for level in LEVELS}
 
-    def _cached(self, key: str) -> HazardReport | None:
-        if self._cache is None:
-            return None
-        try:
-            stored = self._cache.get_cached_analysis(key, self._client.model, self.prompt_version)
-        except SafeGateError as error:
-            _log.warning("analysis cache unreadable, analysing afresh: %s", error.detail)
-            return None
-        if stored is None:
-            return None
-        try:
-            return HazardReport.model_validate(stored)
-        except ValidationError:
-            return None
+        def check(answer: BatchedAnswer) -> list[str]:
+            return [f"{level.value}.{problem}" for level in LEVELS
+                    for problem in checks[level](getattr(answer, level.value))]
 
-    def _store(self, key: str, report: HazardReport) -> None:
-        if self._cache is None:
+        batched = ask_structured(self._client, system=system, user=user,
+                                 answer_model=BatchedAnswer, prompts=self._prompts, check=check)
+        for level in LEVELS:
+            matrix.add(level, getattr(batched, level.value))
+
+    def _entity_round(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
+                      system: str, ids: SceneIds) -> None:
+        """Send hazards that still lack the scene ids their templates bind back for them."""
+        vague = matrix.without_ids(library.lacks_ids)
+        if not vague:
             return
+        listed = "\n".join(f"- {p.category.value}/{p.hazard_class} (given: "
+                           f"{', '.join(sorted(p.entities)) or 'no ids'}): {p.mechanism}"
+                           for p in vague)
+        user = self._prompts.render("analysis_entities", information=information(
+            request, Level.USER), hazards=listed)
         try:
-            self._cache.put_cached_analysis(
-                key, self._client.model, self.prompt_version, report.model_dump(mode="json")
-            )
-        except SafeGateError as error:
-            _log.warning("analysis cache not written: %s", error.detail)
+            answer = self._ask(system, user, _answer_check(Level.USER, ids, library))
+        except LlmOutputInvalid as error:
+            # The hazards stay without ids, so unbound: the gate defers (R2, entities missing).
+            _log.warning("LLM gave no usable entities, hazards stay unbound: %s", error.detail)
+            return
+        # This round was asked about these hazards only: it may dismiss them, nothing else.
+        asked = {p.hazard_class for p in vague}
+        kept = [d for d in answer.dismissed if d.kind == "hazard" and d.name in asked]
+        matrix.add(Level.USER, answer.model_copy(update={"dismissed": kept}))
 
 
-def _entity_check(level: Level, ids: SceneIds) -> Callable[[LevelAnswer], list[str]]:
+def _answer_check(level: Level, ids: SceneIds,
+                  library: LibraryView) -> Callable[[LevelAnswer], list[str]]:
     def check(answer: LevelAnswer) -> list[str]:
+        problems = library.class_problems(answer.hazards)
+        problems += attribute_problems(answer.unknowns, scene=level is not Level.TASK)
         if level is Level.TASK:
-            return []
-        problems: list[str] = []
+            return problems
         for number, hazard in enumerate(answer.hazards):
             for variable, value in hazard.entities.as_bindings().items():
                 problems.extend(
@@ -199,3 +223,15 @@ def _entity_check(level: Level, ids: SceneIds) -> Callable[[LevelAnswer], list[s
         return problems
 
     return check
+
+
+def _not_understood() -> UnknownFact:
+    return UnknownFact(
+        attribute=COMPREHENSION,
+        description="the analysis found no hazard and no unknown, so the task was not understood",
+        critical=True,
+        why="an empty analysis cannot be told apart from a command the model did not follow or "
+        "from an instruction injected in the request to report nothing; it is never authorized",
+        question="I could not work out what this task involves. Please describe it step by "
+        "step, naming the objects and people concerned.",
+    )

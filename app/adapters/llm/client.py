@@ -77,6 +77,11 @@ class ChatClient(Protocol):
         """The model string, part of cache keys and report provenance."""
         ...
 
+    @property
+    def identity(self) -> str:
+        """The model and every setting that changes its answers, for cache keys."""
+        ...
+
     def complete(
         self, messages: Sequence[Message], *, schema_name: str, schema: Mapping[str, Any]
     ) -> ChatAnswer:
@@ -109,6 +114,13 @@ class LitellmClient:
     def model(self) -> str:
         """The litellm model string."""
         return self._config.model
+
+    @property
+    def identity(self) -> str:
+        """The model with its temperature, length limit and requested output dialect."""
+        config = self._config
+        return (f"{config.model}|temperature={config.temperature:g}|"
+                f"max_tokens={config.max_tokens}|format={config.response_format}")
 
     @property
     def response_format(self) -> ResponseFormat:

@@ -78,7 +78,7 @@ class LlmPlanner:
         user = self._prompts.render(
             "planner",
             command=request.command,
-            information=information(request, Level.USER).split("\n", 1)[-1],
+            information=information(request, Level.USER, with_command=False),
             constraints="\n".join(f"- {c}" for c in constraints) or "- none",
         )
         answer = ask_structured(

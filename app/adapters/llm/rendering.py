@@ -2,12 +2,19 @@
 
 In: a `GateRequest` and an information level. Out: `information(request, level)`, the text of
 the paper's information partition for that level (task: the command; deployment: + the scene;
-user: + the user profile and the robot), and `SceneIds`, the ids an answer may use as entities.
+user: + the user profile and the robot), `visible(request)`, the part of a request the model may
+see, and `SceneIds`, the ids an answer may use as entities.
+Everything the caller wrote is data, never instructions: each part is JSON-encoded (so a new line
+or a quote in a command cannot start a line of the prompt) and put between `<data id=N>` markers
+whose N is a digest of the data itself, so text inside cannot forge the closing marker. Keys the
+request schema does not declare are dropped before the prompt (the free `properties` maps stay:
+they are the scene's facts).
 Fails: never; a missing part of the request is rendered as "not given", never left out silently.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 from dataclasses import dataclass
 from typing import Any
@@ -17,41 +24,75 @@ from pydantic import BaseModel
 from app.domain.models import GateRequest, Level
 
 _LEVEL_ORDER = (Level.TASK, Level.DEPLOYMENT, Level.USER)
+DATA_OPEN = '<data id="{nonce}">'
+DATA_CLOSE = '</data id="{nonce}">'
 
 
-def _as_json(model: BaseModel) -> str:
-    data: Any = model.model_dump(mode="json", by_alias=True, exclude_none=True)
-    return json.dumps(data, ensure_ascii=False, sort_keys=True)
+def _declared(value: Any) -> Any:
+    """A model's declared fields only, recursively: extra keys a caller sent are not data."""
+    if isinstance(value, BaseModel):
+        out: dict[str, Any] = {}
+        for name, info in type(value).model_fields.items():
+            item = getattr(value, name)
+            if item is None or item == {}:
+                continue
+            out[info.alias or name] = _declared(item)
+        return out
+    if isinstance(value, list | tuple):
+        return [_declared(item) for item in value]
+    if isinstance(value, dict):
+        return {str(k): _declared(v) for k, v in value.items()}
+    return value
 
 
-def information(request: GateRequest, level: Level) -> str:
-    """The information partition of one level, as prompt text.
+def visible(request: GateRequest) -> dict[str, Any]:
+    """What the model may see of a request: its declared fields, without extras or nulls.
+
+    Args:
+        request: the gate request.
+
+    Returns:
+        A JSON-ready dict (also what the analysis cache key is computed from).
+    """
+    seen: dict[str, Any] = _declared(request)
+    return seen
+
+
+def _encoded(data: Any) -> str:
+    return json.dumps(data, ensure_ascii=False, sort_keys=True, separators=(",", ":"))
+
+
+def information(request: GateRequest, level: Level, *, with_command: bool = True) -> str:
+    """The information partition of one level, as prompt text with the request as data.
 
     Args:
         request: the gate request.
         level: task, deployment or user; each includes what the previous ones show.
+        with_command: False leaves the command out (a caller that shows it on its own).
 
     Returns:
-        Labelled sections: command, then scene, then user and robot, as the level allows.
+        Labelled sections: command, then scene, then user and robot, as the level allows, each
+        given part JSON-encoded between data markers.
     """
     rank = _LEVEL_ORDER.index(level)
-    sections = [f"Command: {request.command}"]
+    seen = visible(request)
+    parts: list[tuple[str, str, str]] = [("Command", "command", "")] if with_command else []
     if rank >= 1:
-        scene = request.scene
-        sections.append(f"Scene (JSON): {_as_json(scene)}" if scene else "Scene: not given.")
+        parts.append(("Scene", "scene", "Scene: not given."))
     if rank >= 2:
-        user = request.user
-        sections.append(
-            f"User being served (JSON): {_as_json(user)}"
-            if user
-            else "User being served: not given; nothing is known about them."
-        )
-        robot = request.robot
-        sections.append(
-            f"Robot (JSON): {_as_json(robot)}"
-            if robot
-            else "Robot: not given; its skills, sensors and payload are unknown."
-        )
+        parts.append(("User being served", "user",
+                      "User being served: not given; nothing is known about them."))
+        parts.append(("Robot", "robot",
+                      "Robot: not given; its skills, sensors and payload are unknown."))
+    given = "\n".join(_encoded(seen[key]) for _, key, _ in parts if key in seen)
+    nonce = hashlib.sha256(given.encode()).hexdigest()[:12]
+    opening, closing = DATA_OPEN.format(nonce=nonce), DATA_CLOSE.format(nonce=nonce)
+    sections: list[str] = []
+    for label, key, missing in parts:
+        if key in seen:
+            sections.append(f"{label} (JSON data):\n{opening}\n{_encoded(seen[key])}\n{closing}")
+        else:
+            sections.append(missing)
     return "\n".join(sections)
 
 

@@ -1,6 +1,7 @@
 """The shapes LLM answers must take, as pydantic models, and their JSON schemas for the provider.
 
 In: nothing (declarations). Out: `LevelAnswer` (one level of the Hazard Analysis Matrix),
+`BatchedAnswer` (the three levels at once),
 `ClassifierAnswer` (the baseline's three-way judgement), `PlanAnswer` (an LLM planner's plan),
 and `json_schema(model)`, the model's JSON schema with `$ref`s inlined, because small local
 servers turn schemas into grammars and some do not follow references.
@@ -18,6 +19,8 @@ from app.domain.world import CANONICAL_ACTIONS
 
 MAX_ITEMS = 40
 HAZARD_CLASS_PATTERN = r"^[a-z][a-z0-9_]{1,60}$"
+ENTITY_NAMES = ("obj", "other", "person", "room", "aid")
+"""The template entity variables an answer may fill (`MatrixEntities`' fields)."""
 
 
 class _Answer(BaseModel):
@@ -45,6 +48,9 @@ class MatrixHazard(_Answer):
 
     category: Category
     hazard_class: str = Field(pattern=HAZARD_CLASS_PATTERN)
+    new_class: bool = Field(
+        default=False, description="true only for a class deliberately not in the library"
+    )
     mechanism: str = Field(min_length=1, max_length=600)
     entities: MatrixEntities = Field(default_factory=MatrixEntities)
     severity: Severity
@@ -68,6 +74,9 @@ class Dismissal(_Answer):
 
     kind: Literal["hazard", "unknown"]
     name: str = Field(min_length=1, max_length=200)
+    entity: str | None = Field(
+        default=None, description="the entity id, to dismiss only the item about it"
+    )
     why: str = Field(min_length=1, max_length=600)
 
 
@@ -77,6 +86,18 @@ class LevelAnswer(_Answer):
     hazards: list[MatrixHazard] = Field(max_length=MAX_ITEMS)
     unknowns: list[MatrixUnknown] = Field(max_length=MAX_ITEMS)
     dismissed: list[Dismissal] = Field(default_factory=list, max_length=MAX_ITEMS)
+    none_because: dict[Category, str] = Field(
+        default_factory=dict,
+        description="for each category with no hazard at this level, why there is none",
+    )
+
+
+class BatchedAnswer(_Answer):
+    """All three levels of the matrix in one answer (the analyzer's batched mode)."""
+
+    task: LevelAnswer
+    deployment: LevelAnswer
+    user: LevelAnswer
 
 
 class ClassifierAnswer(_Answer):

@@ -2,6 +2,8 @@
 
 In: a `ChatClient`, the system and user prompts, the pydantic model the answer must fit and an
 optional semantic check (e.g. "every entity id is in the scene"). Out: the validated model.
+Prose or a Markdown fence around the one JSON object is tolerated (models add them even when
+told not to); the object itself must still fit the model exactly.
 Fails: `LlmOutputInvalid` when the answer is not JSON, is cut short, does not fit the model or
 fails the check, twice in a row (the second time after being told what was wrong); any
 transport `LlmError` (timeout, 429, 5xx) at once, with no repair round. Never returns text.
@@ -87,7 +89,7 @@ def _parse(answer: ChatAnswer, model: type[AnswerT], check: Check[AnswerT] | Non
     if not text:
         raise _Unusable("the answer was empty")
     try:
-        data = json.loads(text)
+        data = _json_in(text)
     except json.JSONDecodeError as error:
         where = f"{error.msg} at char {error.pos}"
         raise _Unusable(f"the answer is not valid JSON ({where})") from error
@@ -101,6 +103,20 @@ def _parse(answer: ChatAnswer, model: type[AnswerT], check: Check[AnswerT] | Non
     if problems:
         raise _Unusable("; ".join(problems[:10]))
     return parsed
+
+
+def _json_in(text: str) -> object:
+    """The JSON answer, also when a model wrapped it in prose ("Here is the matrix: {...}")."""
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError:
+        start = text.find("{")
+        if start < 0:
+            raise
+        # Only one complete object is taken; prose after it is ignored, a second object is not
+        # merged in, and a truncated object still fails to decode.
+        data, _ = json.JSONDecoder().raw_decode(text, start)
+        return data
 
 
 def _without_code_fence(text: str) -> str:

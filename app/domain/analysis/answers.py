@@ -23,6 +23,18 @@ _USER_FIELDS = frozenset({"age_group", "mobility", "cognitive_state", "allergies
 _OBJECT_KEYS = {"contents": "contents", "owner": "owner", "is_on": "on", "hot": "temperature",
                 "mass_kg": "mass_kg"}
 _ASLEEP = {"asleep": "asleep", "impaired": "impaired"}
+# Object properties with a fixed meaning (gate-request spec), set by the generic rule below.
+_OBJECT_FLAGS = ("lidded", "sealed", "sharp", "fragile", "toxic", "flammable", "open", "broken",
+                 "electrical", "wet", "temperature")
+ANSWERABLE_ATTRIBUTES: Mapping[str, str] = {
+    **{key: "person" for key in sorted(_PERSON_KEYS | _ASLEEP.keys() | {"allergic_to",
+                                                                         "location"})},
+    **{key: "object" for key in (*_OBJECT_KEYS, *_OBJECT_FLAGS)},
+    "command": "task",
+}
+"""Every unknown attribute an answer is applied for, and what it is about (a person, an object
+the unknown names, or the task itself); analyzers that name unknowns freely (the LLM) are held to
+these names, so an answer never goes unapplied and the same question does not come back."""
 
 
 def apply_answers(request: GateRequest, answers: Mapping[str, Any],

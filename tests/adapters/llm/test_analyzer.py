@@ -8,6 +8,7 @@ from collections.abc import Callable
 import pytest
 
 from app.adapters.llm import LitellmClient, LlmAnalyzer
+from app.adapters.llm.analyzer import COMPREHENSION
 from app.domain.binding import TemplateIndex
 from app.domain.ensemble import ANALYSIS_UNAVAILABLE
 from app.domain.gate import Decision, Rule
@@ -17,10 +18,12 @@ from tests.adapters.llm.answers import (
     COFFEE_REQUEST,
     EMPTY_LEVEL,
     SAFE_REQUEST,
+    harmless_levels,
     hazard,
     unknown,
 )
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
+from tests.conftest import seed_library
 
 ClientFactory = Callable[..., LitellmClient]
 
@@ -62,9 +65,9 @@ class TestLlmAnalyzer:
         LlmAnalyzer(make_client()).analyze(COFFEE_REQUEST)
         prompts = [r["messages"][-1]["content"] for r in llm_server.requests]
         assert len(prompts) == 3
-        assert "Scene (JSON)" not in prompts[0]
-        assert "Scene (JSON)" in prompts[1] and "Robot" not in prompts[1]
-        assert "User being served: not given" in prompts[2] and "Robot (JSON)" in prompts[2]
+        assert "Scene (JSON data)" not in prompts[0]
+        assert "Scene (JSON data)" in prompts[1] and "Robot" not in prompts[1]
+        assert "User being served: not given" in prompts[2] and "Robot (JSON data)" in prompts[2]
         assert "physical/scald_hot_liquid" in prompts[1]  # the earlier level's finding
         system = llm_server.requests[0]["messages"][0]["content"]
         assert "Never assume that something you were not told is safe" in system
@@ -123,22 +126,32 @@ FAILURES: dict[str, list[Scripted]] = {
 
 @pytest.mark.faults
 class TestFailingClosed:
-    def test_a_clean_empty_analysis_authorizes_so_the_failure_tests_can_fail(
+    def test_a_clean_analysis_authorizes_so_the_failure_tests_can_fail(
+        self, llm_server: ScriptedServer, make_client: ClientFactory
+    ) -> None:
+        llm_server.answer_json(*harmless_levels())
+        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(seed_library()),
+                          analyzer=LlmAnalyzer(make_client()))
+        assert result.decision.decision is Decision.AUTHORIZE
+
+    def test_an_empty_analysis_is_not_understood(
         self, llm_server: ScriptedServer, make_client: ClientFactory
     ) -> None:
         llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL, EMPTY_LEVEL)
-        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(()),
+        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(seed_library()),
                           analyzer=LlmAnalyzer(make_client()))
-        assert result.decision.decision is Decision.AUTHORIZE
+        assert (result.decision.decision, result.decision.rule) == (Decision.DEFER, Rule.R3)
+        assert [(u.attribute, u.critical) for u in result.report.unknowns] == [
+            (COMPREHENSION, True)]
 
     @pytest.mark.parametrize("failure", list(FAILURES), ids=list(FAILURES))
     def test_every_failure_defers(
         self, llm_server: ScriptedServer, make_client: ClientFactory, failure: str
     ) -> None:
         # The failure strikes at the last level, after two clean answers.
-        llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL)
+        llm_server.answer_json(*harmless_levels()[:2])
         llm_server.queue(*FAILURES[failure])
-        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(()),
+        result = run_gate(SAFE_REQUEST, templates=TemplateIndex(seed_library()),
                           analyzer=LlmAnalyzer(make_client(timeout=1.0)))
         assert result.decision.decision is Decision.DEFER
         assert result.decision.rule is Rule.R3

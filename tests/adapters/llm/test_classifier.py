@@ -30,7 +30,7 @@ class TestLlmClassifier:
         assert len(llm_server.requests) == 1
         prompt = llm_server.requests[0]["messages"][-1]["content"]
         assert COFFEE_REQUEST.command in prompt
-        assert "mug_1" in prompt and "Robot (JSON)" in prompt
+        assert "mug_1" in prompt and "Robot (JSON data)" in prompt
 
     @pytest.mark.parametrize(
         "failure",

@@ -10,7 +10,7 @@ from app.adapters.llm import LitellmClient, LlmAnalyzer
 from app.domain.analysis import SymbolicAnalyzer
 from app.domain.binding import TemplateIndex
 from app.domain.ensemble import ANALYSIS_UNAVAILABLE, EnsembleAnalyzer
-from app.domain.gate import Decision
+from app.domain.gate import Decision, Rule
 from app.domain.models import (
     Category,
     Confidence,
@@ -64,6 +64,14 @@ class TestEnsembleAnalyzer:
         assert [p.hazard_class for p in report.proposals] == ["thermal_burn", "choking"]
         assert report.unknowns == (LOOSE_END,)
         assert report.analyzer == "ensemble(a+b)"
+
+    def test_an_unbound_llm_hazard_keeps_the_symbolic_question(self) -> None:
+        asked = LOOSE_END.model_copy(update={"question": "What is in mug_1?"})
+        symbolic = FixedAnalyzer("symbolic", HazardReport(unknowns=(asked,)))
+        llm = FixedAnalyzer("llm", HazardReport(proposals=(_proposal("laser_glare", "llm"),)))
+        result = run_gate(GateRequest(command="x"), templates=TemplateIndex(seed_library()),
+                          analyzer=EnsembleAnalyzer([symbolic, llm]))
+        assert (result.decision.rule, result.decision.question) == (Rule.R2, "What is in mug_1?")
 
     @pytest.mark.faults
     def test_a_failing_member_adds_the_critical_unknown(self) -> None:

@@ -1,9 +1,9 @@
 """On a sample of the benchmark, an ensemble with a scripted LLM never authorizes more unsafe cases.
 
 The scripted LLM is the worst a working model can be for the claim: it answers every level with
-a well-formed, empty matrix ("nothing here"). Alone, such an LLM authorizes unsafe cases; the
-ensemble must still block every unsafe case the symbolic analyzer blocks, because the gate
-decides on the union.
+a well-formed, empty matrix ("nothing here"). Alone, such an LLM authorizes nothing (an empty
+analysis is read as not understood); the ensemble must still block every unsafe case the
+symbolic analyzer blocks, because the gate decides on the union.
 """
 
 from __future__ import annotations
@@ -59,6 +59,6 @@ class TestEnsembleOnTheBenchmark:
         # Case by case: the ensemble authorizes only what symbolic alone authorizes.
         for case, alone, both in zip(cases, symbolic, ensemble, strict=True):
             assert both != "authorize" or alone == "authorize", case.id
-        # The scripted LLM alone would let unsafe cases through, so the union is what holds.
-        assert llm_rates.ar_u is not None and llm_rates.ar_u > symbolic_rates.ar_u
+        # Alone, the silent LLM is not read as "all safe": it authorizes nothing at all.
+        assert llm_rates.ar_u == 0.0 and "authorize" not in llm_alone
         assert len(llm_server.requests) == 2 * 3 * len(cases)

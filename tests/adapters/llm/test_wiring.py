@@ -14,7 +14,7 @@ from app.domain.analysis import SymbolicAnalyzer
 from app.domain.ensemble import ANALYSIS_UNAVAILABLE, EnsembleAnalyzer
 from app.main import create_app
 from app.services.container import build_analyzer
-from tests.adapters.llm.answers import EMPTY_LEVEL, SAFE_REQUEST
+from tests.adapters.llm.answers import EMPTY_LEVEL, SAFE_REQUEST, harmless_levels
 from tests.adapters.llm.conftest import SCRIPTED_MODEL
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
 
@@ -62,10 +62,31 @@ class TestGateOverHttp:
     def test_a_clean_llm_analysis_authorizes(
         self, llm_gate: TestClient, llm_server: ScriptedServer
     ) -> None:
-        llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL, EMPTY_LEVEL)
+        llm_server.answer_json(*harmless_levels())
         answer = llm_gate.post("/gate", json=REQUEST_JSON)
         assert answer.status_code == 200
         assert answer.json()["decision"] == "authorize"
+
+    def test_batched_levels_take_one_call(
+        self, tmp_path: Path, llm_server: ScriptedServer
+    ) -> None:
+        settings = Settings(database_url=f"sqlite:///{tmp_path / 'batched.db'}", analyzer="llm",
+                            llm_model=SCRIPTED_MODEL, llm_api_base=llm_server.base_url,
+                            llm_api_key="sk-scripted", llm_batch_levels=True)
+        task, deployment, user = harmless_levels()
+        llm_server.answer_json({"task": task, "deployment": deployment, "user": user})
+        with TestClient(create_app(settings)) as client:
+            body = client.post("/gate", json=REQUEST_JSON).json()
+        assert body["decision"] == "authorize"
+        assert len(llm_server.requests) == 1
+
+    def test_an_empty_llm_analysis_is_not_understood(
+        self, llm_gate: TestClient, llm_server: ScriptedServer
+    ) -> None:
+        llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL, EMPTY_LEVEL)
+        body = llm_gate.post("/gate", json=REQUEST_JSON).json()
+        assert (body["decision"], body["rule"]) == ("defer", "R3")
+        assert [u["attribute"] for u in body["unknowns"]] == ["comprehension"]
 
     @pytest.mark.parametrize(
         "failure",
