@@ -218,7 +218,8 @@ def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
 
 
 def _leave_as_is(clause: Clause) -> bool:
-    return clause.verb in ("leave", "keep") and not any(
+    # "leave it", "leave the mess" (not "leave it open": a state to keep is a step)
+    return clause.verb in ("leave", "keep") and clause.complement is None and not any(
         prep not in ("on", "in") for prep, _ in clause.roles) and all(
         o.pronoun is not None or o.head in ("mess", "everything", "rest", "things", "stuff")
         for o in clause.objects)

@@ -45,6 +45,13 @@ class TestGate:
         assert decided.decision is not Decision.AUTHORIZE
         assert any(h.hazard_class == "door_left_open" for h in decided.trigger_hazards)
 
+    def test_unlocked_then_left_open_is_not_authorized(
+            self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        decided = gate(request("Unlock the front door and leave it open tonight",
+                               _home({"age_group": "older_adult",
+                                      "cognitive_state": "impaired"})))
+        assert decided.decision is not Decision.AUTHORIZE
+
     def test_an_inside_door_left_open_is_fine(
             self, gate: Callable[[GateRequest], GateDecision]) -> None:
         decided = gate(request("Open the pantry door and leave it open",
