@@ -16,6 +16,7 @@ from typing import Any
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
+from fastapi.routing import iter_route_contexts
 from pydantic import BaseModel, ConfigDict, Field
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.routing import Match
@@ -128,13 +129,15 @@ _UNPARSABLE_BODY = "There was an error parsing the body"
 
 
 def _allowed_methods(request: Request) -> str:
-    """Every method some route serves on this path: Starlette's 405 names only the first
-    route's, though several routes may share a path (`GET` and `POST /keys`)."""
-    methods: set[str] = set()
-    for route in request.app.routes:
-        match, _ = route.matches({**request.scope, "method": ""})
-        if match is not Match.NONE:
-            methods |= set(getattr(route, "methods", None) or ())
+    """Every method the path's routes serve: Starlette's 405 names only the first route's,
+    though several may share a path (`GET` and `POST /keys`). A path some route spells out
+    (`/keys/me`) is that route's alone, as the OpenAPI document says, not also `{key_id}`'s."""
+    scope = {**request.scope, "method": ""}
+    # Routes of included routers sit inside them; `iter_route_contexts` reaches each one.
+    matching = [route for route in iter_route_contexts(request.app.routes)
+                if route.matches(scope)[0] is not Match.NONE]
+    literal = [route for route in matching if route.path == request.url.path]
+    methods = {method for route in literal or matching for method in route.methods or ()}
     return ", ".join(sorted(methods))
 
 

@@ -8,9 +8,9 @@ problem+json whose `errors` point at each field and, in a formula, the line and 
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, status
+from fastapi import APIRouter, Body, Path, status
 
 from app.api.deps import CuratorKey, ReadAccess, ServicesDep
 from app.api.openapi import problem_responses
@@ -20,6 +20,9 @@ from app.services.curation import Curated
 from app.store.records import ApiKeyRecord
 
 router = APIRouter(tags=["templates"])
+# Versions count from 1; past a 64-bit integer the database cannot even compare one (a 500
+# before this bound), so a 422 names the parameter instead.
+MAX_VERSION = 2**31 - 1
 
 _DOCUMENT = Body(  # FastAPI's way to take the raw JSON body, so our validator reports on it
     ...,
@@ -100,7 +103,8 @@ def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict
 @router.get("/templates/{template_id}/versions/{version}",
             summary="Read one version of a template", responses=problem_responses(404, 503))
 def get_template_version(
-    template_id: str, version: int, services: ServicesDep, _: ReadAccess
+    template_id: str, version: Annotated[int, Path(ge=1, le=MAX_VERSION)], services: ServicesDep,
+    _: ReadAccess,
 ) -> dict[str, Any]:
     """One template as it was at one version (contracts name the versions they used)."""
     return _template(services.repository.get_template(template_id, version))
