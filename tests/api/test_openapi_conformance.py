@@ -8,7 +8,8 @@ seed. Every answer must be documented: its status, its content type (`applicatio
 for every error), its headers and its body's schema; no 5xx; no route answers without a key;
 undeclared methods get 405 with the path's `Allow`.
 
-Two findings are allowed, each only where it is explained:
+Two findings are allowed, each only where it is explained (and schemathesis's own generator
+crash, `GENERATOR_CRASH`, which sends nothing):
 - ST202 (a schema-valid body refused) on operations that take a body: the edge limits of
   `app/api/limits.py` (numbers within ±1e15, no NUL or lone surrogate, nesting depth) and the
   service's own validation (a template's formulas, a plan's steps against the scene) refuse
@@ -22,6 +23,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from collections.abc import Callable
@@ -45,6 +47,11 @@ BODY_OPERATIONS = {
 LAX_NUMBER_OPERATIONS = {"POST /gate", "POST /verify", "POST /monitor"}
 ALLOWED = ({("ST202", op) for op in BODY_OPERATIONS}
            | {("ST201", op) for op in LAX_NUMBER_OPERATIONS})
+
+# Hypothesis, describing a lambda of schemathesis's generator for the gate request's large
+# schema, sometimes trips a CPython 3.11 AST check (no request is sent); schemathesis reports it
+# as a "Runtime Error". Any other error (the server unreachable, a crash) fails the test.
+GENERATOR_CRASH = "AST constructor recursion depth mismatch"
 
 pytestmark = pytest.mark.slow
 
@@ -87,7 +94,10 @@ class TestOpenApiConformance:
         tail = output[output.find("=== FAILURES"):][-12000:]
         assert report["complete"], tail
         assert report["operations"]["tested"] == report["operations"]["total"] == 25, tail
-        assert report["errors"] == [], tail
+        errors = output[output.find("=== ERRORS"):output.find("=== FAILURES")]
+        blocks = re.split(r"\n_{3,} .+? _{3,}\n", errors)[1:]
+        assert bool(report["errors"]) == bool(blocks), errors[-6000:]
+        assert all(GENERATOR_CRASH in block for block in blocks), errors[-6000:]
         assert report["test_cases"]["generated"] > 25 * EXAMPLES, tail
         found = {(failure["code"], operation) for failure in report["failures"]
                  for operation in failure["operations"]}
