@@ -15,7 +15,7 @@ from contextlib import asynccontextmanager
 import anyio.to_thread
 from fastapi import Depends, FastAPI
 
-from app.api import docs, observability, problems, revocations
+from app.api import docs, observability, openapi, problems, revocations
 from app.api.deps import require_key_when_locked, robot_writes
 from app.api.limits import json_body_within_limits
 from app.api.routes import (
@@ -80,6 +80,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.settings = resolved
     problems.install(app)
     docs.install(app)
+    openapi.install(app)
     observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes)
     app.add_middleware(revocations.RevocationMiddleware)
     # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.

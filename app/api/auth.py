@@ -1,7 +1,9 @@
 """API keys on HTTP and websocket connections: who is calling, and may they?
 
-In: a connection's `Authorization: Bearer <key>` or `X-API-Key` header (for websockets also an
-`api_key` query parameter, since browsers cannot set headers on them), the services (settings and
+In: a connection's `Authorization: Bearer <key>` or `X-API-Key` header, read by FastAPI's
+`HTTPBearer` and `APIKeyHeader` (which also declare both security schemes in the OpenAPI
+document), for websockets also an `api_key` query parameter (browsers cannot set headers on
+them); the services (settings and
 repository) and the roles an endpoint accepts. Out: the caller's `ApiKeyRecord`, or None for an
 endpoint left open in `auth=open` mode. Fails: `Unauthorized` (401) when a key is needed and
 missing, or presented but unknown, revoked or malformed (a presented key is always checked, even
@@ -20,6 +22,7 @@ from __future__ import annotations
 from collections.abc import Collection, MutableMapping
 from typing import Any
 
+from fastapi.security import APIKeyHeader, HTTPAuthorizationCredentials, HTTPBearer
 from starlette.exceptions import WebSocketException
 from starlette.requests import HTTPConnection
 from starlette.status import WS_1008_POLICY_VIOLATION
@@ -42,38 +45,51 @@ _CACHE_ATTRIBUTE = "safegate_api_key"
 _HOW = "send 'Authorization: Bearer <key>' or 'X-API-Key: <key>'"
 
 
-def presented_secret(connection: HTTPConnection) -> str | None:
+bearer_scheme = HTTPBearer(
+    scheme_name="BearerKey", auto_error=False,
+    description="An API key as `Authorization: Bearer <key>` (`safegate keys create --role ...`). "
+                "With `SAFEGATE_AUTH=open` (the embedded default) reads, the gate, `/verify` "
+                "and the monitor need none; template writes and `/keys` always do.")
+api_key_scheme = APIKeyHeader(
+    name="X-API-Key", scheme_name="ApiKeyHeader", auto_error=False,
+    description="The same API key as an `X-API-Key` header (websockets also take an `api_key` "
+                "query parameter, since browsers cannot set their headers).")
+
+
+def presented_secret(connection: HTTPConnection, bearer: HTTPAuthorizationCredentials | None,
+                     header_key: str | None) -> str | None:
     """The key the client sent, or None when it sent none.
+
+    Args:
+        connection: the HTTP request or websocket.
+        bearer: what `bearer_scheme` read (None for no `Authorization` header, or one that is
+            not `Bearer <key>`).
+        header_key: what `api_key_scheme` read (None for no or an empty `X-API-Key`).
 
     Raises:
         Unauthorized: an `Authorization` header that is not `Bearer <key>`.
     """
-    header = connection.headers.get("authorization")
-    if header is not None:
-        scheme, _, token = header.strip().partition(" ")
-        if scheme.lower() != "bearer" or not token.strip():
+    headers = connection.headers
+    if "authorization" in headers:
+        token = "" if bearer is None else bearer.credentials.strip()
+        if not token:
             raise Unauthorized(f"malformed Authorization header; {_HOW}")
-        return token.strip()
-    key = connection.headers.get("x-api-key")
-    if key is not None:
-        return key.strip()
+        return token
+    if header_key is not None or "x-api-key" in headers:
+        # An empty X-API-Key is a key that is presented and matches none.
+        return (header_key or "").strip()
     if connection.scope.get("type") == "websocket":
         return connection.query_params.get("api_key")
     return None
 
 
-def lookup_pending(connection: HTTPConnection) -> bool:
+def lookup_pending(connection: HTTPConnection, secret: str | None) -> bool:
     """Whether `authenticate` would query the database: a key was sent and not yet looked up.
 
     Async callers use it to stay on the event loop for the common cases (no key, or a key
     already checked on this connection) and go to a worker thread only for the lookup.
     """
-    if _CACHE_ATTRIBUTE in connection.scope.get("state", {}):
-        return False
-    headers = connection.headers
-    if "authorization" in headers or "x-api-key" in headers:
-        return True
-    return connection.scope.get("type") == "websocket" and "api_key" in connection.query_params
+    return secret is not None and _CACHE_ATTRIBUTE not in connection.scope.get("state", {})
 
 
 def cached_key(scope: MutableMapping[str, Any]) -> ApiKeyRecord | None:
@@ -82,8 +98,13 @@ def cached_key(scope: MutableMapping[str, Any]) -> ApiKeyRecord | None:
     return key
 
 
-def authenticate(connection: HTTPConnection, services: Services) -> ApiKeyRecord | None:
+def authenticate(connection: HTTPConnection, services: Services,
+                 secret: str | None = None) -> ApiKeyRecord | None:
     """The caller's active key (looked up once per connection), or None when none was sent.
+
+    The first call on a connection is the app-wide dependency's, with the `secret` it read
+    through the security schemes (`presented_secret`); later calls (a route's own check, e.g.
+    `authorize_websocket`) get the key it found.
 
     Raises:
         Unauthorized: a key was sent but is unknown, revoked or malformed.
@@ -92,7 +113,6 @@ def authenticate(connection: HTTPConnection, services: Services) -> ApiKeyRecord
     if _CACHE_ATTRIBUTE in state:
         cached: ApiKeyRecord | None = state[_CACHE_ATTRIBUTE]
         return cached
-    secret = presented_secret(connection)
     key = None
     if secret is not None:
         key = find_key(services.repository, secret)
@@ -108,6 +128,7 @@ def authorize(
     roles: Collection[ApiKeyRole],
     *,
     open_when_open: bool,
+    secret: str | None = None,
 ) -> ApiKeyRecord | None:
     """Check the caller against the roles an endpoint accepts.
 
@@ -116,6 +137,7 @@ def authorize(
         services: the app's services (settings and repository).
         roles: the roles accepted.
         open_when_open: True when the endpoint needs no key in `auth=open` mode.
+        secret: the key presented, as `presented_secret` read it (see `authenticate`).
 
     Returns:
         The caller's key, or None when the endpoint is open and no key was sent.
@@ -124,7 +146,7 @@ def authorize(
         Unauthorized: a key is needed and missing, or the key sent is not valid.
         Forbidden: the key's role is not among `roles`.
     """
-    key = authenticate(connection, services)
+    key = authenticate(connection, services, secret)
     if key is None:
         if open_when_open and services.settings.auth == "open":
             return None
@@ -152,7 +174,8 @@ def authorize_websocket(
     """`authorize` for a websocket; call it before `websocket.accept()`.
 
     Args:
-        websocket: the connection (the key may also come as the `api_key` query parameter).
+        websocket: the connection, whose key (header or `api_key` query parameter) the
+            app-wide dependency has read already; without it, no key counts as sent.
         services: the app's services.
         roles: the roles accepted (robots by default: the monitor's clients).
         open_when_open: True when no key is needed in `auth=open` mode.

@@ -4,7 +4,8 @@ In: exceptions from the domain tree (`app.domain.errors`), request validation er
 unexpected. Out: `application/problem+json` bodies with `type`, `title`, `status`, `detail` and,
 for invalid input, `errors`: each with the offending field's path (e.g. `body.scene.objects.0.id`),
 and where known a line/column or plan step. `Busy` (the analysis pool is full) is a 503 with a
-`Retry-After` header. Unexpected exceptions are 500s with no internals.
+`Retry-After` header. Unexpected exceptions are 500s with no internals. `Problem` is the body's
+schema, which the OpenAPI document declares for every error status (`app/api/openapi.py`).
 """
 
 from __future__ import annotations
@@ -15,7 +16,10 @@ from typing import Any
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
+from fastapi.routing import iter_route_contexts
+from pydantic import BaseModel, ConfigDict, Field
 from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.routing import Match
 
 from app.domain import errors
 
@@ -30,6 +34,41 @@ _STATUS: list[tuple[type[errors.SafeGateError], int]] = [
     (errors.Unauthorized, 401),
     (errors.Unavailable, 503),
 ]
+
+
+class ProblemField(BaseModel):
+    """One thing wrong with the input: where it is, and why."""
+
+    model_config = ConfigDict(extra="allow")
+
+    field: str = Field(description="The offending place, from the top of the request, e.g. "
+                                   "`body.scene.objects.0.properties.mass_kg` or `plan[3]`.")
+    message: str = Field(description="What is wrong with it, in words.")
+    type: str | None = Field(default=None, description="A machine-readable kind of problem "
+                                                       "(`missing`, `literal_error`...).")
+
+
+class Problem(BaseModel):
+    """An RFC 9457 problem: every error SafeGate answers has this body, as
+    `application/problem+json`. More members may follow the ones listed (`limit`, `step`,
+    `warnings`...)."""
+
+    model_config = ConfigDict(extra="allow", json_schema_extra={"examples": [{
+        "type": "https://safegate.dev/problems/validation", "title": "Invalid request",
+        "status": 422,
+        "detail": "the request does not fit the expected shape at: "
+                  "body.scene.objects.0.properties.mass_kg",
+        "errors": [{"field": "body.scene.objects.0.properties.mass_kg",
+                    "message": "Input should be greater than or equal to 0",
+                    "type": "greater_than_equal"}]}]})
+
+    type: str = Field(description="A URI naming the kind of problem (`about:blank` when the "
+                                  "HTTP status says it all).")
+    title: str = Field(description="A short summary of the kind of problem.")
+    status: int = Field(description="The HTTP status code, repeated.")
+    detail: str = Field(description="What went wrong with this request.")
+    errors: list[ProblemField] | None = Field(
+        default=None, description="For invalid input: every offending field.")
 
 
 def problem(
@@ -89,8 +128,24 @@ async def _validation_error(_: Request, exc: Exception) -> JSONResponse:
 _UNPARSABLE_BODY = "There was an error parsing the body"
 
 
-async def _http_error(_: Request, exc: Exception) -> JSONResponse:
+def _allowed_methods(request: Request) -> str:
+    """Every method the path's routes serve: Starlette's 405 names only the first route's,
+    though several may share a path (`GET` and `POST /keys`). A path some route spells out
+    (`/keys/me`) is that route's alone, as the OpenAPI document says, not also `{key_id}`'s."""
+    scope = {**request.scope, "method": ""}
+    # Routes of included routers sit inside them; `iter_route_contexts` reaches each one.
+    matching = [route for route in iter_route_contexts(request.app.routes)
+                if route.matches(scope)[0] is not Match.NONE]
+    literal = [route for route in matching if route.path == request.url.path]
+    methods = {method for route in literal or matching for method in route.methods or ()}
+    return ", ".join(sorted(methods))
+
+
+async def _http_error(request: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, StarletteHTTPException)
+    headers = dict(exc.headers) if exc.headers else None
+    if exc.status_code == 405:
+        headers = {**(headers or {}), "Allow": _allowed_methods(request)}
     if exc.status_code == 400 and exc.detail == _UNPARSABLE_BODY:
         return problem(
             422,
@@ -101,7 +156,7 @@ async def _http_error(_: Request, exc: Exception) -> JSONResponse:
             errors=[{"field": "body", "message": "the body could not be decoded as JSON",
                      "type": "json_invalid"}],
         )
-    return problem(exc.status_code, str(exc.detail), str(exc.detail))
+    return problem(exc.status_code, str(exc.detail), str(exc.detail), headers=headers)
 
 
 async def _unexpected(_: Request, exc: Exception) -> JSONResponse:

@@ -11,27 +11,44 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from app.domain.binding import BindingResult
 from app.domain.contracts import Contract, ContractCondition, planner_constraints
-from app.domain.models import HazardProposal, UnknownFact
+from app.domain.gate import Decision, DeferKind, Rule
+from app.domain.models import (
+    Category,
+    ConditionKind,
+    Confidence,
+    HazardProposal,
+    Level,
+    Preventability,
+    Severity,
+    UnknownFact,
+)
 from app.domain.template_validation import suggest_template
 from app.services.gate import Decided
-from app.store.records import ContractRecord
+from app.store.records import ContractRecord, ContractStatus
 
 
 class HazardOut(BaseModel):
-    level: str
-    category: str
-    hazard_class: str
-    mechanism: str
-    severity: str
-    preventability: str
-    confidence: str
-    template_id: str | None
+    """A hazard Stage 1 found, with the template that bound it (or why none did)."""
+
+    level: Level = Field(description="Where it comes from: the task, the deployment, the user.")
+    category: Category
+    hazard_class: str = Field(description="From the shared taxonomy, e.g. `thermal_burn`.")
+    mechanism: str = Field(description="How harm would come about, in words.")
+    severity: Severity
+    preventability: Preventability = Field(
+        description="Whether some way of doing the task avoids it (then the contract forbids "
+                    "the other ways).")
+    confidence: Confidence
+    template_id: str | None = Field(description="The template that bound it; null: unbound.")
     template_ids: list[str] = Field(default_factory=list)
-    bindings: dict[str, Any]
+    bindings: dict[str, Any] = Field(description="Template variables to scene ids, e.g. "
+                                                 '`{"obj": "mug_1", "person": "p1"}`.')
     unbound_reason: str | None = None
 
 
 class UnknownOut(BaseModel):
+    """A fact the gate needed and did not have; a critical one is never authorized around."""
+
     attribute: str
     description: str
     critical: bool
@@ -48,18 +65,21 @@ class ReferencePlanOut(BaseModel):
 
 
 class GateResponse(BaseModel):
-    """The answer to POST /gate."""
+    """The answer to POST /gate: the decision, the rule that fired, and why."""
 
-    request_id: str
-    decision: str
-    rule: str
-    defer_kind: str | None
+    request_id: str = Field(description="The audit record's id (`GET /gate/{request_id}`).")
+    decision: Decision
+    rule: Rule = Field(description="The Decision Gate rule that fired (R1, R1b, R2, R3, R3b, "
+                                   "R4; see `docs/api/gate.md`).")
+    defer_kind: DeferKind | None = Field(
+        description="For a deferral: `clarify` (answer `question`) or `extend_library` (a "
+                    "curator must add a template).")
     question: str | None
     reason: str
     hazards: list[HazardOut]
     unknowns: list[UnknownOut]
-    triggers: list[str]
-    contract_id: str | None
+    triggers: list[str] = Field(description="The hazards and unknowns that decided it.")
+    contract_id: str | None = Field(description="For `authorize`: the Task Safety Contract.")
     analyzer: str
     parent_request_id: str | None = None
     timings_ms: dict[str, float] = Field(default_factory=dict)
@@ -166,10 +186,12 @@ def gate_response(decided: Decided) -> GateResponse:
 
 
 class ContractConditionOut(BaseModel):
+    """One condition of a contract: a formula over the scene's entities."""
+
     model_config = ConfigDict(from_attributes=True)
 
     id: str
-    kind: str
+    kind: ConditionKind
     formula: str
     description: str
     action: str | None
@@ -203,6 +225,8 @@ class ScopeOut(BaseModel):
 
 
 class ContractResponse(BaseModel):
+    """A Task Safety Contract: what every plan and every action of the task must keep."""
+
     contract_id: str
     request_id: str | None
     invariants: list[ContractConditionOut]
@@ -212,7 +236,7 @@ class ContractResponse(BaseModel):
     planner_constraints: list[str]
     attempts_used: int = 0
     attempts_left: int | None = None
-    status: str = "active"
+    status: ContractStatus = ContractStatus.ACTIVE
     scope: ScopeOut | None = None
     """None for a contract compiled before scopes existed: its plans get no scope check."""
 

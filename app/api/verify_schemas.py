@@ -8,10 +8,11 @@ are taken as any JSON value so a malformed step is reported by the domain with i
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from app.api.examples import VERIFY_EXAMPLE
 from app.config import PLAN_STEPS_CAP
 from app.domain.contracts import Contract, ContractCondition
 from app.domain.models import ConditionKind, InitialState
@@ -57,22 +58,43 @@ class InlineContract(BaseModel):
                         aborts=conditions(self.aborts, ConditionKind.ABORT))
 
 
+# Exactly one of `contract_id` and `contract` (the service says so with a 422 naming `body`).
+_ONE_CONTRACT: dict[str, Any] = {"oneOf": [
+    {"required": ["contract_id"],
+     "properties": {"contract_id": {"type": "string"}, "contract": {"type": "null"}}},
+    {"required": ["contract"],
+     "properties": {"contract": {"type": "object"}, "contract_id": {"type": "null"}}},
+]}
+_PLAN_STEP: dict[str, Any] = {
+    "type": "object", "required": ["action"], "additionalProperties": True,
+    "description": "An action of the action model (`GET /vocabulary`); `object`, `target` and "
+                   "the rest depend on the action.",
+    "properties": {"action": {"type": "string", "examples": ["PickupObject", "navigate"]},
+                   "object": {"type": "string"}, "target": {"type": "string"}},
+}
+
+
 class VerifyRequest(BaseModel):
-    """What a planner POSTs to /verify: a plan and the contract it must keep."""
+    """What a planner POSTs to /verify: a plan and the contract it must keep (by id, or inline).
+    """
+
+    model_config = ConfigDict(json_schema_extra={**_ONE_CONTRACT, "examples": [VERIFY_EXAMPLE]})
 
     contract_id: str | None = Field(default=None, min_length=1, max_length=200)
     contract: InlineContract | None = None
-    plan: list[Any] = Field(max_length=MAX_PLAN_STEPS)
-    initial_state: InitialState | None = None
+    plan: list[Any] = Field(max_length=MAX_PLAN_STEPS, json_schema_extra={"items": _PLAN_STEP})
+    initial_state: InitialState | None = Field(
+        default=None, description="The scene and robot before the first step; default: the "
+                                  "gate request's.")
 
 
 class ViolationOut(BaseModel):
     """One violation (or, with `detail`, an instance the solver could not decide)."""
 
-    step: int
+    step: int = Field(description="The plan step (from 0) where it happens.")
     state: int
     action: dict[str, Any] | None
-    kind: str
+    kind: Literal["invariant", "guard", "abort", "precondition", "scope"]
     condition_id: str
     formula: str
     description: str
@@ -111,7 +133,9 @@ class VerifyResponse(BaseModel):
     reason: str | None = None
     attempts: int
     attempts_left: int | None
-    decision: str | None
+    decision: Literal["authorize", "reject"] | None = Field(
+        description="The gate decision as it stands after this verification (`reject` once "
+                    "the attempts are used up).")
     downgraded: bool = False
     contract_id: str | None = None
     states_checked: int = 0

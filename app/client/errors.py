@@ -2,13 +2,15 @@
 
 SafeGateClientError
 ├── ApiError            SafeGate answered with an error status (carries the problem+json body)
+├── SafeGateUnavailable SafeGate could not be reached (or stayed busy) through every retry
 ├── MonitorError        the monitor answered `error`: the message was not checked (not allowed)
 │   └── MonitorResync   ... because it does not follow the session's last step: resynchronise
 ├── MonitorHalted       the monitor halted the session: a violation now, or an earlier one
 └── MonitorConnectionError   the websocket could not be opened, or closed while waiting
 
-A refused action (`MonitorError`, `MonitorHalted`) means: do not run it. Transport failures of
-`httpx` and `websockets` other than a closed monitor socket propagate unchanged.
+A refused action (`MonitorError`, `MonitorHalted`) means: do not run it; so does any error at
+all. No error of the SDK, nor any transport failure, is ever turned into an allowed action or an
+authorized task.
 """
 
 from __future__ import annotations
@@ -27,6 +29,11 @@ class ApiError(SafeGateClientError):
         self.status = status
         self.problem = problem
         super().__init__(f"{status} {problem.get('title', '')}: {problem.get('detail', '')}")
+
+
+class SafeGateUnavailable(SafeGateClientError):
+    """The request never got an answer: connection failures or timeouts on every attempt.
+    Nothing was decided; the robot must not act on it."""
 
 
 class MonitorError(SafeGateClientError):

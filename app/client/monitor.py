@@ -13,11 +13,21 @@ The client numbers its messages `seq` = first_seq, first_seq + 1, ... A runtime 
 to a session goes on from the session's `last_seq` + 1 (see `GateClient.monitor_summary`). After
 a `MonitorResync` whose `last_seq` is not its own last finished action, it sends its whole current
 state with `sync(state, seq)` and goes on from `seq` + 1.
+
+Reconnect and resume: when the socket drops or an answer does not come in time, the client
+reconnects (`reconnects` times, with a growing pause) and sends the same message again; every
+answer is durable on the server before it is sent, so the message is checked against the state
+the session really reached. An `after` whose first answer was lost and that the monitor already
+holds (its `resync.last_seq` is that action) counts as accepted. When the monitor asks to
+resynchronise and the client was given `current_state` (a callable returning the robot's whole
+state), it sends `sync` with it and the message again, once; without it, `MonitorResync` is
+raised. Nothing here ever lets an action run that the monitor did not allow.
 """
 
 from __future__ import annotations
 
 import json
+import time
 from collections.abc import Callable, Iterator, Mapping
 from types import TracebackType
 from typing import Any
@@ -60,7 +70,8 @@ class MonitorClient:
     """One runtime's connection to a monitoring session; use it as a context manager."""
 
     def __init__(self, base_url: str, session_id: str, *, api_key: str | None = None,
-                 first_seq: int = 1, timeout: float = 10.0) -> None:
+                 first_seq: int = 1, timeout: float = 10.0, reconnects: int = 3,
+                 current_state: Callable[[], Observation] | None = None) -> None:
         """Prepare a connection (opened by `__enter__` or `connect`).
 
         Args:
@@ -69,22 +80,31 @@ class MonitorClient:
             api_key: a robot key, when the server runs with `auth=keys`.
             first_seq: the seq of the first action (after a reconnect: the last one + 1).
             timeout: seconds to wait for the connection and for each answer.
+            reconnects: how often to reconnect and resend one message before giving up
+                (`MonitorConnectionError`); 0 never reconnects.
+            current_state: the robot's whole current state (`{"scene": ..., "robot": ...}`),
+                sent as `sync` when the monitor asks to resynchronise.
         """
         self.url = websocket_url(base_url, f"/monitor/{session_id}")
         self.session_id = session_id
         self.next_seq = first_seq
+        self.reconnects = reconnects
+        self._current_state = current_state
         self._api_key = api_key
         self._timeout = timeout
         self._socket: ClientConnection | None = None
+        self._open = False
         self._running: tuple[int, JsonObject] | None = None
 
     def connect(self) -> MonitorClient:
         """Open the websocket."""
         self._socket = _open(self.url, self._api_key, self._timeout)
+        self._open = True
         return self
 
     def close(self) -> None:
         """Close the websocket."""
+        self._open = False
         if self._socket is not None:
             self._socket.close()
             self._socket = None
@@ -96,14 +116,36 @@ class MonitorClient:
                  trace: TracebackType | None) -> None:
         self.close()
 
-    def _exchange(self, message: JsonObject) -> JsonObject:
-        if self._socket is None:
+    def _send_and_receive(self, message: JsonObject) -> tuple[JsonObject, bool]:
+        """The answer to a message, reconnecting and resending it as needed; and whether it
+        was resent."""
+        if not self._open:
             raise MonitorConnectionError("not connected: use `with MonitorClient(...)`")
-        try:
-            self._socket.send(json.dumps(message))
-            answer: JsonObject = json.loads(self._socket.recv(timeout=self._timeout))
-        except (ConnectionClosed, TimeoutError, OSError) as error:
-            raise MonitorConnectionError(f"monitor connection lost: {error}") from error
+        for attempt in range(self.reconnects + 1):
+            try:
+                if self._socket is None:
+                    time.sleep(min(0.2 * 2 ** attempt, 5.0))
+                    self._socket = _open(self.url, self._api_key, self._timeout)
+                self._socket.send(json.dumps(message))
+                answer: JsonObject = json.loads(self._socket.recv(timeout=self._timeout))
+                return answer, attempt > 0
+            except (ConnectionClosed, TimeoutError, OSError, MonitorConnectionError) as error:
+                lost = error
+                if self._socket is not None:
+                    # A late answer on this socket must never be taken for the next one's.
+                    self._socket.close()
+                    self._socket = None
+        raise MonitorConnectionError(f"monitor connection lost: {lost}") from lost
+
+    def _exchange(self, message: JsonObject, *, resyncing: bool = False) -> JsonObject:
+        answer, resent = self._send_and_receive(message)
+        position = answer.get("resync")
+        if answer.get("type") == "error" and isinstance(position, dict):
+            if resent and message["type"] == "after" and position == {
+                    "last_seq": message["seq"], "pending_seq": None}:
+                return {"type": "allow", "seq": message["seq"]}  # accepted before the drop
+            if self._current_state is not None and not resyncing:
+                return self._resume(message)
         if answer.get("seq") != message["seq"] and answer.get("type") != "error":
             raise MonitorConnectionError(f"answer for seq {answer.get('seq')} while waiting "
                                          f"for seq {message['seq']}")
@@ -115,6 +157,16 @@ class MonitorClient:
         if isinstance(answer.get("resync"), dict):
             raise MonitorResync(answer)
         raise MonitorError(answer)
+
+    def _resume(self, message: JsonObject) -> JsonObject:
+        """Resynchronise with `current_state`, then send `message` again (once)."""
+        assert self._current_state is not None
+        finished = message["seq"] if message["type"] in ("after", "sync") else message["seq"] - 1
+        self._exchange({"type": "sync", "seq": finished, "state": dict(self._current_state())},
+                       resyncing=True)
+        if message["type"] in ("after", "sync"):
+            return {"type": "allow", "seq": message["seq"]}  # the sync reported its outcome
+        return self._exchange(message, resyncing=True)
 
     def before(self, action: Mapping[str, Any], state: Observation | None = None) -> int:
         """Ask before running an action; returns its seq when allowed.

@@ -62,6 +62,9 @@ class Services:
     policy: GatePolicy
     metrics: Metrics = field(default_factory=Metrics)
     reader: Reader | None = None
+    solver_lock: threading.Lock = field(default_factory=threading.Lock)
+    """Held around every Z3 use in this process (template validation): Z3's shared context is
+    not thread-safe, and concurrent template writes in the threadpool failed with a 500."""
 
     def close(self) -> None:
         self.engine.dispose()

@@ -35,11 +35,10 @@ class Curated:
 
 def validate(services: Services, document: object) -> TemplateValidation:
     """Validate a document against the schema, the vocabulary, Z3 and the stored library."""
-    return validate_template(
-        document,
-        library=services.repository.list_templates(),
-        timeout_ms=services.settings.solver_timeout_ms,
-    )
+    library = services.repository.list_templates()
+    with services.solver_lock:
+        return validate_template(document, library=library,
+                                 timeout_ms=services.settings.solver_timeout_ms)
 
 
 def _refuse(errors: list[dict[str, Any]], warnings: tuple[TemplateIssue, ...] = ()) -> None:
@@ -107,7 +106,8 @@ def activate(services: Services, template_id: str) -> HazardTemplate:
         for other in services.templates.index().for_class(template.hazard_class)
         if other.id != template_id
     ]
-    conflict = class_conflict(template, others, services.settings.solver_timeout_ms)
+    with services.solver_lock:
+        conflict = class_conflict(template, others, services.settings.solver_timeout_ms)
     if conflict is not None:
         raise Conflict(conflict.message, field=conflict.field, code=conflict.code)
     stored = services.repository.set_template_status(template_id, TemplateStatus.ACTIVE)

@@ -8,6 +8,7 @@ from fastapi import APIRouter
 from fastapi.responses import PlainTextResponse, Response
 
 from app.api.deps import ServicesDep
+from app.api.openapi import problem_responses
 from app.api.schemas import ContractResponse, contract_response
 from app.domain.contracts import planner_constraints
 from app.services import gate
@@ -15,7 +16,13 @@ from app.services import gate
 router = APIRouter(tags=["contracts"])
 
 
-@router.get("/contracts/{contract_id}", response_model=ContractResponse)
+@router.get(
+    "/contracts/{contract_id}", response_model=ContractResponse,
+    summary="Read a Task Safety Contract",
+    responses={200: {"content": {"text/plain": {"schema": {"type": "string"}, "example": (
+        "Safety constraints your plan must satisfy:\n- Never throw anything at a person.\n")}},
+        "description": "The contract: JSON, or plain text with `format=planner`."},
+        **problem_responses(404, 503)})
 def get_contract(
     contract_id: str, services: ServicesDep, format: Literal["json", "planner"] = "json"
 ) -> ContractResponse | Response:

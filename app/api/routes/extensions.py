@@ -12,11 +12,12 @@ from __future__ import annotations
 from typing import Any
 
 from fastapi import APIRouter, Response
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, ConfigDict, Field
 
 from app.api import analysis_jobs
 from app.api.deps import CuratorKey, PoolDep, ReadAccess, ServicesDep
 from app.api.observability import GATE_REQUEST_ID_HEADER
+from app.api.openapi import problem_responses
 from app.api.schemas import GateResponse
 from app.services import extensions
 from app.services.extensions import PendingClass, WaitingRequest
@@ -25,6 +26,10 @@ router = APIRouter(tags=["extensions"])
 
 
 class ReevaluateClassRequest(BaseModel):
+    """The hazard class whose waiting requests to decide again."""
+
+    model_config = ConfigDict(json_schema_extra={"examples": [{"hazard_class": "thermal_burn"}]})
+
     hazard_class: str = Field(min_length=1, max_length=120, examples=["sharp_laceration"])
 
 
@@ -67,7 +72,8 @@ def _group(group: PendingClass) -> dict[str, Any]:
     }
 
 
-@router.get("/extensions/pending")
+@router.get("/extensions/pending", summary="List requests waiting for the library",
+            responses=problem_responses(503))
 def pending_extensions(services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
     """Requests waiting for a library extension, grouped by hazard class."""
     groups = extensions.pending_by_class(services)
@@ -75,7 +81,10 @@ def pending_extensions(services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
     return {"count": len(request_ids), "classes": [_group(g) for g in groups]}
 
 
-@router.post("/extensions/reevaluate", response_model=ReevaluateClassResponse)
+@router.post("/extensions/reevaluate", response_model=ReevaluateClassResponse,
+             summary="Decide a hazard class's waiting requests again",
+             responses=problem_responses(
+                 403, (409, "No active template covers the class yet."), 503))
 async def reevaluate_class(
     body: ReevaluateClassRequest, services: ServicesDep, pool: PoolDep, _: CuratorKey
 ) -> Response:
@@ -86,7 +95,10 @@ async def reevaluate_class(
     return Response(text, media_type="application/json")
 
 
-@router.post("/gate/{request_id}/reevaluate", response_model=GateResponse)
+@router.post("/gate/{request_id}/reevaluate", response_model=GateResponse,
+             summary="Decide a waiting request again", tags=["gate"],
+             responses=problem_responses(
+                 403, 404, (409, "The request is not waiting for a library extension."), 503))
 async def reevaluate_request(
     request_id: str, services: ServicesDep, pool: PoolDep, _: CuratorKey
 ) -> Response:

@@ -10,14 +10,16 @@ validate and serialize it a second time.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Query, Response
 
 from app.api import analysis_jobs
 from app.api.deps import PoolDep, ServicesDep
+from app.api.examples import ANSWERS_EXAMPLES, GATE_EXAMPLES
 from app.api.limits import check_gate_request
 from app.api.observability import GATE_REQUEST_ID_HEADER
+from app.api.openapi import problem_responses
 from app.api.schemas import GateResponse
 from app.domain.models import GateRequest
 from app.services import gate
@@ -33,9 +35,10 @@ def _json(answer: analysis_jobs.GateAnswer, services: ServicesDep) -> Response:
                     headers={GATE_REQUEST_ID_HEADER: answer.record_id})
 
 
-@router.post("/gate", response_model=GateResponse)
+@router.post("/gate", response_model=GateResponse, summary="Decide a command",
+             responses=problem_responses(403, 503))
 async def post_gate(
-    request: GateRequest,
+    request: Annotated[GateRequest, Body(openapi_examples=GATE_EXAMPLES)],
     services: ServicesDep,
     pool: PoolDep,
     reference_plan: bool = Query(
@@ -53,19 +56,25 @@ async def post_gate(
     return _json(await pool.run(analysis_jobs.decide, request, reference_plan), services)
 
 
-@router.get("/gate/{request_id}")
+@router.get("/gate/{request_id}", summary="Read a decision's audit record",
+            responses=problem_responses(404, 503))
 def get_gate(request_id: str, services: ServicesDep) -> dict[str, Any]:
     """The audit record of one decided request, with the decisions that followed it."""
     return gate.audit_record(services, request_id)
 
 
-@router.post("/gate/{request_id}/answers", response_model=GateResponse)
+@router.post("/gate/{request_id}/answers", response_model=GateResponse,
+             summary="Answer the clarifying question",
+             responses=problem_responses(403, 404, 503))
 async def post_answers(
     request_id: str,
     services: ServicesDep,
     pool: PoolDep,
     answers: dict[str, Any] = Body(  # noqa: B008 - FastAPI's way to declare a body
-        ..., examples=[{"age_group": "adult"}, {"contents": "water"}]
+        ..., openapi_examples=ANSWERS_EXAMPLES,
+        description="The missing facts, each under the attribute the question names "
+                    "(`age_group`, `contents`, `mass_kg`...); at least one.",
+        json_schema_extra={"minProperties": 1},
     ),
 ) -> Response:
     """Answer the clarifying question; the pipeline runs again and links to the original."""

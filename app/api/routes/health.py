@@ -5,17 +5,20 @@ from __future__ import annotations
 from fastapi import APIRouter
 
 from app.api.deps import ServicesDep
+from app.api.openapi import problem_responses
 
 router = APIRouter(tags=["health"])
 
 
-@router.get("/healthz")
+@router.get("/healthz", summary="Liveness: the process is up")
 def healthz() -> dict[str, str]:
     """The process is up."""
     return {"status": "ok"}
 
 
-@router.get("/readyz")
+@router.get("/readyz", summary="Readiness: database and library",
+            responses=problem_responses(
+                (503, "The database does not answer or the library is not loaded.")))
 def readyz(services: ServicesDep) -> dict[str, object]:
     """The database answers and the template library is loaded (503 otherwise)."""
     services.repository.ping()

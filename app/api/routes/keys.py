@@ -10,10 +10,11 @@ from __future__ import annotations
 from typing import Any
 
 from fastapi import APIRouter, Request, status
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, ConfigDict, Field
 from starlette.concurrency import run_in_threadpool
 
 from app.api.deps import AdminKey, AnyKey, ServicesDep
+from app.api.openapi import problem_responses
 from app.api.revocations import open_websockets
 from app.services.access import issue_api_key
 from app.store.records import ApiKeyRecord, ApiKeyRole
@@ -22,7 +23,13 @@ router = APIRouter(tags=["keys"])
 
 
 class CreateKeyRequest(BaseModel):
-    role: ApiKeyRole
+    """A key to issue: its role and a name to recognise it by."""
+
+    model_config = ConfigDict(json_schema_extra={"examples": [
+        {"role": "robot", "name": "kitchen robot planner"}]})
+
+    role: ApiKeyRole = Field(description="robot (gate, verify, monitor), curator (template "
+                                         "writes), admin (keys, and everything)")
     name: str = Field(min_length=1, max_length=200)
 
 
@@ -30,26 +37,29 @@ def _key(record: ApiKeyRecord) -> dict[str, Any]:
     return record.model_dump(mode="json", exclude={"key_hash"})
 
 
-@router.get("/keys/me")
+@router.get("/keys/me", summary="Who am I: the presented key",
+            responses=problem_responses(503))
 def whoami(key: AnyKey) -> dict[str, Any]:
     """The key the caller presented: id, role, name."""
     return _key(key)
 
 
-@router.get("/keys")
+@router.get("/keys", summary="List API keys", responses=problem_responses(403, 503))
 def list_keys(services: ServicesDep, _: AdminKey) -> dict[str, Any]:
     """Every key, revoked ones included (never their secrets)."""
     return {"keys": [_key(k) for k in services.repository.list_api_keys()]}
 
 
-@router.post("/keys", status_code=status.HTTP_201_CREATED)
+@router.post("/keys", status_code=status.HTTP_201_CREATED, summary="Issue an API key",
+             responses=problem_responses(403, 503))
 def create_key(body: CreateKeyRequest, services: ServicesDep, _: AdminKey) -> dict[str, Any]:
     """Issue a key; the answer holds its secret, shown this once."""
     record, secret = issue_api_key(services.repository, body.role, body.name)
     return {**_key(record), "key": secret}
 
 
-@router.delete("/keys/{key_id}")
+@router.delete("/keys/{key_id}", summary="Revoke an API key",
+               responses=problem_responses(403, 404, 503))
 async def revoke_key(key_id: str, request: Request, services: ServicesDep,
                      _: AdminKey) -> dict[str, Any]:
     """Revoke a key for good; its open websockets are closed (code 4401) before this answers."""

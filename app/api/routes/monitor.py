@@ -16,7 +16,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Depends, WebSocket, WebSocketDisconnect, status
 from pydantic import BaseModel, ConfigDict, Field
@@ -24,7 +24,9 @@ from starlette.requests import HTTPConnection
 
 from app.api.auth import ANY_ROLE, ROBOT_ROLES, authorize_websocket
 from app.api.deps import ReadAccess, RobotAccess, ServicesDep
+from app.api.examples import MONITOR_OPEN_EXAMPLE
 from app.api.limits import check_initial_state
+from app.api.openapi import problem_responses
 from app.domain.errors import NotFound, SafeGateError
 from app.domain.models import InitialState
 from app.services.monitoring import MonitorService
@@ -53,27 +55,36 @@ MonitoringDep = Annotated[MonitorService, Depends(monitoring_of)]
 class MonitorOpenRequest(BaseModel):
     """Open a monitoring session."""
 
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid",
+                              json_schema_extra={"examples": [MONITOR_OPEN_EXAMPLE]})
 
     contract_id: str = Field(min_length=1, max_length=64)
-    initial_state: InitialState | None = None
+    initial_state: InitialState | None = Field(
+        default=None, description="The scene and robot when the run starts; default: the gate "
+                                  "request's.")
 
 
 class MonitorOpenResponse(BaseModel):
+    """A new (or, for a halted contract, already halted) session."""
+
     session_id: str
     contract_id: str
     halted: bool
 
 
 class ViolationOut(BaseModel):
+    """The violation that halted a session (the same shape as on the websocket)."""
+
     timestamp: str
     action: dict[str, Any]
-    kind: str
+    kind: Literal["invariant", "guard", "abort", "scope"]
     condition_id: str
     formula: str
     description: str
     seq: int
-    phase: str
+    phase: Literal["before", "after", "sync"] = Field(
+        description="The message it answered: `before` (guards, aborts), `after` or `sync` "
+                    "(invariants, aborts).")
     established: bool
     unknown_facts: list[str]
     quote: str | None = None
@@ -101,7 +112,9 @@ class MonitorSummaryResponse(BaseModel):
 
 
 @router.post("/monitor", response_model=MonitorOpenResponse,
-             status_code=status.HTTP_201_CREATED)
+             status_code=status.HTTP_201_CREATED, summary="Open a monitoring session",
+             responses=problem_responses(
+                 403, 404, (409, "The contract is exhausted: its task was rejected."), 503))
 def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep, services: ServicesDep,
                  _: RobotAccess) -> MonitorOpenResponse:
     """Open a session; the initial state defaults to the gate request's scene and robot."""
@@ -112,7 +125,8 @@ def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep, services: 
                                halted=record.halted)
 
 
-@router.get("/monitor/{session_id}/summary", response_model=MonitorSummaryResponse)
+@router.get("/monitor/{session_id}/summary", response_model=MonitorSummaryResponse,
+            summary="Read a session's MonitorSummary", responses=problem_responses(404, 503))
 async def monitor_summary(session_id: str, monitoring: MonitoringDep,
                           _: ReadAccess) -> MonitorSummaryResponse:
     """What the session has checked, its violations, and whether it is halted."""

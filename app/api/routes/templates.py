@@ -8,17 +8,21 @@ problem+json whose `errors` point at each field and, in a formula, the line and 
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, status
+from fastapi import APIRouter, Body, Path, status
 
 from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.api.openapi import problem_responses
 from app.domain.models import Category, HazardTemplate, TemplateStatus
 from app.services import curation
 from app.services.curation import Curated
 from app.store.records import ApiKeyRecord
 
 router = APIRouter(tags=["templates"])
+# Versions count from 1; past a 64-bit integer the database cannot even compare one (a 500
+# before this bound), so a 422 names the parameter instead.
+MAX_VERSION = 2**31 - 1
 
 _DOCUMENT = Body(  # FastAPI's way to take the raw JSON body, so our validator reports on it
     ...,
@@ -49,7 +53,8 @@ def _template(template: HazardTemplate) -> dict[str, Any]:
     return template.model_dump(mode="json")
 
 
-@router.get("/templates")
+@router.get("/templates", summary="List and search templates",
+            responses=problem_responses(503))
 def list_templates(
     services: ServicesDep,
     _: ReadAccess,
@@ -66,7 +71,8 @@ def list_templates(
     return {"count": len(found), "templates": [_template(t) for t in found]}
 
 
-@router.post("/templates/validate")
+@router.post("/templates/validate", summary="Validate a template without storing it",
+             responses=problem_responses(503))
 def validate_template(
     services: ServicesDep, _: ReadAccess, document: Any = _DOCUMENT
 ) -> dict[str, Any]:
@@ -74,7 +80,9 @@ def validate_template(
     return curation.validate(services, document).as_dict()
 
 
-@router.post("/templates", status_code=status.HTTP_201_CREATED)
+@router.post("/templates", status_code=status.HTTP_201_CREATED,
+             summary="Create a template (a draft)",
+             responses=problem_responses(403, (409, "A template with this id exists."), 503))
 def create_template(
     services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
 ) -> dict[str, Any]:
@@ -82,7 +90,8 @@ def create_template(
     return _curated(curation.create(services, document, _author(key)))
 
 
-@router.get("/templates/{template_id}")
+@router.get("/templates/{template_id}", summary="Read a template with its versions",
+            responses=problem_responses(404, 503))
 def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
     """One template at its current version, with every version kept."""
     history = services.repository.get_template_history(template_id)
@@ -91,15 +100,19 @@ def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict
     return body
 
 
-@router.get("/templates/{template_id}/versions/{version}")
+@router.get("/templates/{template_id}/versions/{version}",
+            summary="Read one version of a template", responses=problem_responses(404, 503))
 def get_template_version(
-    template_id: str, version: int, services: ServicesDep, _: ReadAccess
+    template_id: str, version: Annotated[int, Path(ge=1, le=MAX_VERSION)], services: ServicesDep,
+    _: ReadAccess,
 ) -> dict[str, Any]:
     """One template as it was at one version (contracts name the versions they used)."""
     return _template(services.repository.get_template(template_id, version))
 
 
-@router.put("/templates/{template_id}")
+@router.put("/templates/{template_id}", summary="Revise a template (a new version)",
+            responses=problem_responses(
+                403, 404, (409, "Revised concurrently, or its id does not match."), 503))
 def revise_template(
     template_id: str, services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
 ) -> dict[str, Any]:
@@ -107,13 +120,17 @@ def revise_template(
     return _curated(curation.revise(services, template_id, document, _author(key)))
 
 
-@router.post("/templates/{template_id}/activate")
+@router.post("/templates/{template_id}/activate", summary="Activate a template",
+             responses=problem_responses(
+                 403, 404, (409, "Its status or validity does not allow it."), 503))
 def activate_template(template_id: str, services: ServicesDep, _: CuratorKey) -> dict[str, Any]:
     """Put a template to use: the gate binds it from the next request on."""
     return _template(curation.activate(services, template_id))
 
 
-@router.post("/templates/{template_id}/deprecate")
+@router.post("/templates/{template_id}/deprecate", summary="Deprecate a template",
+             responses=problem_responses(
+                 403, 404, (409, "Its status does not allow it."), 503))
 def deprecate_template(
     template_id: str, services: ServicesDep, _: CuratorKey
 ) -> dict[str, Any]:

@@ -11,12 +11,16 @@ from fastapi import APIRouter, Response
 from app.api import analysis_jobs
 from app.api.deps import PoolDep, ServicesDep
 from app.api.limits import check_initial_state, check_plan
+from app.api.openapi import problem_responses
 from app.api.verify_schemas import VerifyRequest, VerifyResponse
 
 router = APIRouter(tags=["verify"])
 
 
-@router.post("/verify", response_model=VerifyResponse)
+@router.post("/verify", response_model=VerifyResponse, summary="Verify a plan against a contract",
+             responses=problem_responses(
+                 403, 404, (409, "The contract's verification attempts are used up "
+                                 "(AttemptsExhausted): its task is rejected."), 503))
 async def post_verify(request: VerifyRequest, services: ServicesDep, pool: PoolDep) -> Response:
     """Verify a plan for every value of the unknown facts; 200 whether or not it passes.
 

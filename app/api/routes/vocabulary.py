@@ -12,7 +12,7 @@ from app.domain.world import describe_actions
 router = APIRouter(tags=["vocabulary"])
 
 
-@router.get("/vocabulary")
+@router.get("/vocabulary", summary="List the condition language and the action model")
 def get_vocabulary() -> dict[str, Any]:
     """Every predicate and function a condition may use, and every action a plan may use."""
     symbols = [

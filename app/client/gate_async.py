@@ -1,0 +1,110 @@
+"""`AsyncGateClient`: `GateClient` for asyncio planners (httpx's `AsyncClient`).
+
+In, out and failures are `GateClient`'s (`app/client/gate.py`): the same methods, awaited; the
+same `RetryPolicy`; `ApiError` for an error status and `SafeGateUnavailable` when no answer came
+through any retry. No failure is ever returned as a decision.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Mapping, Sequence
+from types import TracebackType
+from typing import Any
+
+import httpx
+
+from app.client.gate import (
+    Body,
+    JsonObject,
+    as_json,
+    auth_headers,
+    decode,
+    monitor_body,
+    unavailable,
+    verify_body,
+)
+from app.client.retry import RetryPolicy
+
+
+class AsyncGateClient:
+    """An asyncio SafeGate client for planners; use it as an async context manager."""
+
+    def __init__(self, base_url: str = "http://127.0.0.1:8000", *, api_key: str | None = None,
+                 timeout: float = 30.0, retry: RetryPolicy | None = None,
+                 transport: httpx.AsyncBaseTransport | None = None) -> None:
+        """Connect lazily to a SafeGate server (arguments as `GateClient`'s)."""
+        self.base_url = base_url.rstrip("/")
+        self.api_key = api_key
+        self.retry = retry or RetryPolicy()
+        self._http = httpx.AsyncClient(base_url=self.base_url, headers=auth_headers(api_key),
+                                       timeout=timeout, transport=transport)
+
+    async def __aenter__(self) -> AsyncGateClient:
+        return self
+
+    async def __aexit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                        trace: TracebackType | None) -> None:
+        await self.aclose()
+
+    async def aclose(self) -> None:
+        """Close the connection pool."""
+        await self._http.aclose()
+
+    async def _send(self, method: str, path: str, **options: Any) -> httpx.Response:
+        attempt = 1
+        while True:
+            outcome: httpx.Response | httpx.TransportError
+            try:
+                outcome = await self._http.request(method, path, **options)
+            except httpx.TransportError as error:
+                outcome = error
+            if not self.retry.retries(attempt, outcome):
+                if isinstance(outcome, httpx.TransportError):
+                    raise unavailable(method, path, outcome) from outcome
+                return outcome
+            await asyncio.sleep(self.retry.wait(attempt, outcome))
+            attempt += 1
+
+    async def gate(self, request: Body, *, reference_plan: bool = False) -> JsonObject:
+        """Ask whether a command may run: `POST /gate` (see `GateClient.gate`)."""
+        params = {"reference_plan": "true"} if reference_plan else None
+        return decode(await self._send("POST", "/gate", json=as_json(request), params=params))
+
+    async def answer(self, request_id: str, answers: Mapping[str, Any]) -> JsonObject:
+        """Answer a deferred request's question: `POST /gate/{id}/answers`."""
+        return decode(await self._send("POST", f"/gate/{request_id}/answers",
+                                       json=dict(answers)))
+
+    async def decision(self, request_id: str) -> JsonObject:
+        """A stored decision with the decisions that followed it: `GET /gate/{id}`."""
+        return decode(await self._send("GET", f"/gate/{request_id}"))
+
+    async def contract(self, contract_id: str) -> JsonObject:
+        """The Task Safety Contract: `GET /contracts/{id}`."""
+        return decode(await self._send("GET", f"/contracts/{contract_id}"))
+
+    async def planner_constraints(self, contract_id: str) -> str:
+        """The contract as plain constraints for a planner's prompt."""
+        response = await self._send("GET", f"/contracts/{contract_id}",
+                                    params={"format": "planner"})
+        if response.is_error:
+            decode(response)
+        return response.text
+
+    async def verify(self, contract_id: str, plan: Sequence[Mapping[str, Any]],
+                     initial_state: Body | None = None) -> JsonObject:
+        """Check a plan against its contract: `POST /verify` (see `GateClient.verify`)."""
+        return decode(await self._send("POST", "/verify",
+                                       json=verify_body(contract_id, plan, initial_state)))
+
+    async def open_monitor(self, contract_id: str, initial_state: Body | None = None) -> str:
+        """Open a runtime monitoring session: `POST /monitor`; returns the session id."""
+        answer = decode(await self._send("POST", "/monitor",
+                                         json=monitor_body(contract_id, initial_state)))
+        session_id: str = answer["session_id"]
+        return session_id
+
+    async def monitor_summary(self, session_id: str) -> JsonObject:
+        """The session's MonitorSummary: `GET /monitor/{id}/summary`."""
+        return decode(await self._send("GET", f"/monitor/{session_id}/summary"))
