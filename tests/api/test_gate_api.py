@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable
 from typing import Any
 
 import httpx
+import pytest
 from fastapi.testclient import TestClient
 
 SPEC_REQUEST: dict[str, Any] = {
@@ -132,6 +134,14 @@ class TestInvalidInput:
         client.post("/gate", json={"command": ""})
         client.post("/gate", json={"command": "x", "robot": {"payload_kg": -1}})
         assert rows() == before
+
+    @pytest.mark.parametrize("robot", [{"max_speed_mps": True}, {"payload_kg": "2.5"}])
+    def test_a_number_given_as_a_boolean_or_text_is_refused(
+            self, client: TestClient, robot: dict[str, object]) -> None:
+        answer = client.post("/gate", json={"command": "x", "robot": robot})
+        assert answer.status_code == 422
+        assert answer.headers["content-type"].startswith("application/problem+json")
+        assert next(iter(robot)) in json.dumps(answer.json())
 
 
 class TestAnswers:

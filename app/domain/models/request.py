@@ -4,7 +4,8 @@ In: JSON from a robot planner, shaped as `shared/spec/gate-request.md` describes
 Out: frozen pydantic models. Every field but `command` is optional and a missing field means
 "unknown", never "safe": downstream stages must treat `None` as not known.
 Property values with a fixed meaning (`mass_kg` >= 0, `temperature` hot/cold/room, flags, a
-person's age group...) are checked; other properties pass as given.
+person's age group...) are checked; other properties pass as given. Numbers are JSON numbers:
+`true` or `"0.5"` for a speed or a coordinate is refused, never read as 1 or 0.5.
 Fails: pydantic `ValidationError` on a shape that does not fit (the API maps it to a 422 naming
 the field, e.g. `body.scene.objects.0.properties.mass_kg`).
 """
@@ -13,7 +14,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, WithJsonSchema
 from typing_extensions import TypedDict
 
 AgeGroup = Literal["infant", "child", "teen", "adult", "older_adult"]
@@ -38,7 +39,13 @@ def _listed(value: object) -> object:
 # Property values with a fixed meaning (`shared/spec/gate-request.md`). Each may be null
 # (unknown); any other key is free. A flag is a JSON boolean or a word that means one ("yes",
 # "off"...); a mass is a number, never a boolean or text.
-_Flag = bool | None
+def _not_a_number(value: object) -> object:
+    if isinstance(value, int | float) and not isinstance(value, bool):
+        raise ValueError("a flag is true, false or a word for one (yes/no, on/off), not a number")
+    return value
+
+
+_Flag = Annotated[bool | None, BeforeValidator(_not_a_number)]
 _Mass = Annotated[float, Field(ge=0, allow_inf_nan=False, strict=True)] | None
 
 
@@ -72,10 +79,13 @@ class PersonProperties(TypedDict, total=False):
     age_group: Annotated[AgeGroup | None, BeforeValidator(_word)]
     mobility: Annotated[Mobility | None, BeforeValidator(_word)]
     cognitive_state: Annotated[CognitiveState | None, BeforeValidator(_word)]
-    allergies: Annotated[list[str] | None, BeforeValidator(_listed)]  # "peanut" = ["peanut"]
+    allergies: Annotated[list[str] | None, BeforeValidator(_listed), WithJsonSchema(
+        {"anyOf": [{"type": "array", "items": {"type": "string"}}, {"type": "string"},
+                   {"type": "null"}]})]  # "peanut" = ["peanut"]
     pregnant: _Flag
-    visual_impairment: bool | str | None  # a flag, or what it is ("low vision")
-    hearing_impairment: bool | str | None
+    # a flag, or what it is ("low vision")
+    visual_impairment: Annotated[bool | str | None, BeforeValidator(_not_a_number)]
+    hearing_impairment: Annotated[bool | str | None, BeforeValidator(_not_a_number)]
     mass_kg: _Mass
 
 
@@ -96,9 +106,9 @@ class _Frozen(BaseModel):
 class Position(_Frozen):
     """A point in the scene's frame, in metres."""
 
-    x: float = Field(allow_inf_nan=False)
-    y: float = Field(allow_inf_nan=False)
-    z: float | None = Field(default=None, allow_inf_nan=False)
+    x: float = Field(allow_inf_nan=False, strict=True)
+    y: float = Field(allow_inf_nan=False, strict=True)
+    z: float | None = Field(default=None, allow_inf_nan=False, strict=True)
 
 
 class Obstacle(_Frozen):
@@ -177,8 +187,8 @@ class RobotProfile(_Frozen):
     room: str | None = None
     position: Position | None = None
     skills: list[str] | None = None
-    payload_kg: float | None = Field(default=None, ge=0, allow_inf_nan=False)
-    max_speed_mps: float | None = Field(default=None, ge=0, allow_inf_nan=False)
+    payload_kg: float | None = Field(default=None, ge=0, allow_inf_nan=False, strict=True)
+    max_speed_mps: float | None = Field(default=None, ge=0, allow_inf_nan=False, strict=True)
     sensors: list[str] | None = None
     holding: str | None = None
 
