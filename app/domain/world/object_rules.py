@@ -372,8 +372,10 @@ _flag_rule("broken", lambda k: False)
 _flag_rule("dirty", lambda k: None if k.flag("dirtyable") is not False else False)
 # A bottle or box in hand starts shut (AI2-THOR's initial scenes agree): an open one is
 # something a caller would mention. Doors, fridges and cupboards stay for the scene to say.
-_flag_rule("open", lambda k: None if k.flag("openable") is not False and k.flag(
-    "pickupable") is not True else False)
+# A sink or a shelf has no door or lid: what lies in it is as reachable as in an open box.
+_flag_rule("open", lambda k: True if k.flag("openable") is False and k.flag(
+    "receptacle") is True and k.flag("pickupable") is not True else None if k.flag(
+    "openable") is not False and k.flag("pickupable") is not True else False)
 _flag_rule("lidded", lambda k: None if k.is_container is not False else False)
 _flag_rule("sealed", lambda k: None if k.is_container is not False else False)
 _flag_rule(
