@@ -152,6 +152,28 @@ class Grounder:
             return found
         return self._new_person(phrase)
 
+    def _owners_one(self, phrase: NounPhrase) -> Referent | None:
+        """"mum's" after "his heart tablets": the owner's thing of the kind last named, or the
+        one thing the owner has; None when neither is found."""
+        owner = phrase.possessor or ""
+        kinds = {self.objects[i].type for i in self.last_object or () if i in self.objects}
+        candidates = [i for i, o in self.objects.items()
+                      if (not kinds or o.type in kinds) and i not in (self.last_object or ())]
+        owned = [i for i in candidates if _words_of(str(self.objects[i].properties.get(
+            "owner", ""))) & self._owner_words(owner)]
+        if len(owned) != 1:
+            return None
+        self.last_object = self.last_single = (owned[0],)
+        return Referent(phrase, "object", (owned[0],))
+
+    def _owner_words(self, owner: str) -> set[str]:
+        found = self._person(NounPhrase(owner, head=owner))
+        words = _words_of(owner)
+        for person_id in found.ids if found is not None else ():
+            person = self.people[person_id]
+            words |= _words_of(person.id, person.name, person.role)
+        return words - _GENERIC
+
     def _animal(self, phrase: NounPhrase) -> Referent | None:
         """A pet the scene lists, named or by its kind ("Biscuit", "the dog")."""
         words = _words_of(phrase.phrase or phrase.text)
@@ -166,6 +188,10 @@ class Grounder:
         destination, a source) does not change what "it" points to next."""
         if place and phrase.pronoun in ("there", "here") and self.last_place is not None:
             return self.last_place
+        if phrase.pronoun == "one" and phrase.possessor:
+            owned = self._owners_one(phrase)
+            if owned is not None:
+                return owned
         if phrase.pronoun in ("it", "this", "that", "these", "those", "one", "ones") or (
                 phrase.pronoun == "them" and self.last_object):
             if self.last_object:

@@ -107,6 +107,18 @@ def _without_time(words: list[str]) -> list[str]:
     return words
 
 
+# Words before "'s" that make a contraction, not an owner ("it's", "that's", "what's").
+_NOT_OWNERS = frozenset({"it", "that", "this", "there", "here", "what", "who", "where", "he",
+                         "she", "let", "one", "everyone", "everything", "nobody", "somebody",
+                         "someone", "today", "tomorrow", "tonight", "yesterday"})
+
+
+def _owner(word: str, lexicon: Lexicon) -> bool:
+    """Whether "<word>'s" ending a phrase names an owner ("mum's") rather than a thing that
+    is something ("the door's locked", "dinner's ready")."""
+    return word not in _NOT_OWNERS and (word in lexicon.people or not lexicon.is_thing(word))
+
+
 def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
     """Read one noun phrase.
 
@@ -152,6 +164,11 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
             words, contents = before, " ".join(after)  # "a glass of water"
         else:
             words = before or after
+    if words and words[-1].endswith("'s") and _owner(words[-1][:-2], lexicon) and not any(
+            w.endswith("'s") for w in words[:-1]):
+        # "a couple of mum's", "use Grandma's instead": the owner's one of what was named
+        return NounPhrase(text, possessor=words[-1][:-2], contents=contents, quantity=quantity,
+                          every=every, pronoun="one")
     for index, word in enumerate(words):
         if word.endswith(("'s", "s'")) and index < len(words) - 1:
             owner = word[:-2] if word.endswith("'s") else word[:-1]
