@@ -72,6 +72,7 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("mains_switch", "switching the object off cuts the power to the home (fuse box, "
                  "main breaker)"),
     _object_flag("ignition", "the object makes fire (lighter, matches)"),
+    _object_flag("alcoholic", "the object is or holds an alcoholic drink (wine, beer, spirits)"),
     _object_flag("animal", "the object is a pet or another animal (dog, cat, rabbit)"),
     _object_flag("pet_toxic", "the object is or holds something that poisons a dog or a cat "
                  "(grapes, raisins, chocolate, onion, xylitol)"),

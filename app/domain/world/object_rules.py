@@ -19,6 +19,7 @@ from app.domain.world.concepts import concept_of
 from app.domain.world.entities import ObjectState
 from app.domain.world.object_types import TypeInfo, normalize_type
 from app.domain.world.substances import (
+    alcoholic,
     bite_sized,
     is_empty,
     pet_toxic,
@@ -322,6 +323,7 @@ _flag_rule("life_support", lambda k: k.trait("life_support"))
 _flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
 _flag_rule("ignition", lambda k: k.trait("ignition"))
 
+_CAMEL_SPLIT = re.compile(r"(?<=[a-z])(?=[A-Z])")
 _ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
                            "parrot", "bird", "budgie", "tortoise", "ferret", "pet"})
 
@@ -334,6 +336,19 @@ def _animal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     if stated is not None:
         return stated
     return bool(obj.properties.get("species")) or normalize_type(obj.type) in _ANIMAL_TYPES
+
+
+@_rule("alcoholic")
+def _alcoholic(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "alcoholic")
+    if stated is not None:
+        return stated
+    contents = object_contents(obj)
+    itself = " ".join(w for w in (obj.name, _CAMEL_SPLIT.sub(" ", obj.type)) if w)
+    if isinstance(contents, Unknown):
+        return True if alcoholic(itself) else contents
+    return alcoholic(f"{contents} {itself}")
 
 
 @_rule("pet_toxic")

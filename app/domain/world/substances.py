@@ -193,6 +193,12 @@ def _drug_classes(text: str) -> set[str]:
     return {name for name, members in _DRUG_CLASSES.items() if named & members}
 
 
+def alcoholic(text: str) -> bool:
+    """Whether the text names an alcoholic drink ("red wine", "a beer", "whisky")."""
+    return "alcohol" in _drug_classes(text) and not {"free", "alcohol-free", "non-alcoholic",
+                                                       "zero"} & set(text.lower().split())
+
+
 def interacts(substance: str, taken: str) -> bool:
     """Whether `substance` is dangerous for someone who takes `taken` (a medicine or drink)."""
     mine, theirs = _drug_classes(substance), _drug_classes(taken)
