@@ -323,7 +323,7 @@ _flag_rule("life_support", lambda k: k.trait("life_support"))
 _flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
 _flag_rule("ignition", lambda k: k.trait("ignition"))
 
-_CAMEL_SPLIT = re.compile(r"(?<=[a-z])(?=[A-Z])")
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 _ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
                            "parrot", "bird", "budgie", "tortoise", "ferret", "pet"})
 
@@ -338,33 +338,25 @@ def _animal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return bool(obj.properties.get("species")) or normalize_type(obj.type) in _ANIMAL_TYPES
 
 
-@_rule("alcoholic")
-def _alcoholic(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    obj = state.objects[args[0]]
-    stated = stated_value(obj, "alcoholic")
-    if stated is not None:
-        return stated
-    contents = object_contents(obj)
-    itself = " ".join(w for w in (obj.name, _CAMEL_SPLIT.sub(" ", obj.type)) if w)
-    if isinstance(contents, Unknown):
-        return True if alcoholic(itself) else contents
-    return alcoholic(f"{contents} {itself}")
+def _named_rule(symbol: str, names: Callable[[str], bool]) -> None:
+    # What the object holds, or what it is called ("WineBottle", "a bowl of grapes"), names the
+    # substance; unknown contents leave the fact unknown unless the name already says it.
+    def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
+        obj = state.objects[args[0]]
+        stated = stated_value(obj, symbol)
+        if stated is not None:
+            return stated
+        contents = object_contents(obj)
+        itself = " ".join(w for w in (obj.name, _CAMEL.sub(" ", obj.type)) if w)
+        if isinstance(contents, Unknown):
+            return True if names(itself) else contents
+        return names(f"{contents} {itself}")
+    OBJECT_RULES[symbol] = rule
 
 
-@_rule("pet_toxic")
-def _pet_toxic(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    obj = state.objects[args[0]]
-    stated = stated_value(obj, "pet_toxic")
-    if stated is not None:
-        return stated
-    contents = object_contents(obj)
-    itself = " ".join(w for w in (obj.name, obj.type) if w)
-    if isinstance(contents, Unknown):
-        return True if pet_toxic(itself) else contents
-    return pet_toxic(f"{contents} {itself}")
+_named_rule("alcoholic", alcoholic)
+_named_rule("pet_toxic", pet_toxic)
 
-
-_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 _OUTSIDE_WORDS = frozenset({"front", "back", "garden", "patio", "porch", "exterior", "outside",
                             "outer", "entrance", "street", "yard", "garage", "gate", "exit"})
 
@@ -380,6 +372,8 @@ def _exterior(state: WorldState, args: tuple[str, ...]) -> FactValue:
     words = set(re.split(r"[^a-z]+", " ".join(
         (obj.id, obj.name or "", _CAMEL.sub(" ", obj.type))).lower()))
     return bool(words & _OUTSIDE_WORDS)
+
+
 # Things are dry and whole unless the scene says otherwise or an effect (a spill, a fall)
 # makes them so: a wet or broken object is something a caller would mention.
 _flag_rule("wet", lambda k: False)
