@@ -155,10 +155,17 @@ _MADE_SAFE = frozenset({"halved", "quartered", "chopped", "mashed", "cut", "slic
 def bite_sized(text: str) -> bool:
     """Whether the text names a food a young child can choke on as given ("whole grapes",
     "peanuts"), not one cut up or made into something else ("halved grapes", "peanut butter")."""
-    words = {w for w in _SPLIT.split(text.lower()) if w}
+    return _names_any(text, _BITE_SIZED) and not _words(text) & _MADE_SAFE
+
+
+def _words(text: str) -> set[str]:
+    return {w for w in _SPLIT.split(text.lower()) if w}
+
+
+def _names_any(text: str, table: frozenset[str]) -> bool:
+    """Whether the text names a member of the table, a word or a compound ("cherry_tomato")."""
     joined = normalize(text)
-    named = bool(words & _BITE_SIZED) or any(f in joined for f in _BITE_SIZED if "_" in f)
-    return named and not words & _MADE_SAFE
+    return bool(_words(text) & table) or any(t in joined for t in table if "_" in t)
 
 
 # What poisons a dog or a cat even in small amounts (veterinary poison-line lists).
@@ -172,9 +179,7 @@ _PET_POISONS = frozenset({"grape", "grapes", "raisin", "raisins", "sultana", "su
 
 def pet_toxic(text: str) -> bool:
     """Whether the text names something that poisons a dog or a cat (grapes, chocolate)."""
-    words = {w for w in _SPLIT.split(text.lower()) if w}
-    return bool(words & _PET_POISONS) or any(p in normalize(text) for p in _PET_POISONS
-                                             if "_" in p)
+    return _names_any(text, _PET_POISONS)
 
 
 def same_substance(named: str, contents: str) -> bool:
