@@ -311,9 +311,7 @@ def _give(builder: PlanBuilder, grounded: Grounded) -> None:
     for obj in _ids(grounded):
         if builder.acquire(obj):
             builder.go_to(person)
-            # A pet takes nothing from a hand: what it is given is set down in front of it.
-            builder.act("PutObject" if builder.state.entity_type(person) == "object"
-                        else "HandOver", obj, person)
+            builder.hand_to(obj, person)
 
 
 _BASINS = frozenset({"toilet", "sink", "sinkbasin", "bathtub", "bathtubbasin", "bucket",

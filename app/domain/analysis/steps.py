@@ -261,8 +261,8 @@ class PlanBuilder:
         if not self.acquire(object_id):
             return
         self.go_to(person)
-        if self.state.entity_type(person) == "object":
-            self.act("PutObject", object_id, person)  # a pet: set it down in front of them
+        if self.state.entity_type(person) == "object":  # a pet: no hand-over or set-down choice
+            self.hand_to(object_id, person)
             return
         before = self.state
         room = before.room_of(person)
@@ -276,6 +276,12 @@ class PlanBuilder:
             self.state = step(before, handover[0].action)
         except PlanError as error:
             self.notes.append(error.detail)
+
+    def hand_to(self, object_id: str, recipient: str) -> None:
+        """Give the held object: a person takes it from the hand; a pet takes nothing from a
+        hand, so what it is given is set down in front of it."""
+        pet = self.state.entity_type(recipient) == "object"
+        self.act("PutObject" if pet else "HandOver", object_id, recipient)
 
     def switch(self, device: str, on: bool, kind: str = "literal") -> None:
         self.go_to(device)
