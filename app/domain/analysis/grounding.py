@@ -155,24 +155,27 @@ class Grounder:
     def _owners_one(self, phrase: NounPhrase) -> Referent | None:
         """"mum's" after "his heart tablets": the owner's thing of the kind last named, or the
         one thing the owner has; None when neither is found."""
-        owner = phrase.possessor or ""
         kinds = {self.objects[i].type for i in self.last_object or () if i in self.objects}
         candidates = [i for i, o in self.objects.items()
                       if (not kinds or o.type in kinds) and i not in (self.last_object or ())]
-        owned = [i for i in candidates if _words_of(str(self.objects[i].properties.get(
-            "owner", ""))) & self._owner_words(owner)]
+        owned = self._owned_by(candidates, phrase.possessor or "")
         if len(owned) != 1:
             return None
         self.last_object = self.last_single = (owned[0],)
         return Referent(phrase, "object", (owned[0],))
 
-    def _owner_words(self, owner: str) -> set[str]:
-        found = self._person(NounPhrase(owner, head=owner))
-        words = _words_of(owner)
-        for person_id in found.ids if found is not None else ():
-            person = self.people[person_id]
-            words |= _words_of(person.id, person.name, person.role)
-        return words - _GENERIC
+    def _owned_by(self, ids: list[str], possessor: str) -> list[str]:
+        """The objects among `ids` whose `owner` is the person the possessor names ("mum",
+        "her", "Sam")."""
+        owner = self._person(NounPhrase(possessor, head=possessor, pronoun=possessor if (
+            possessor in ("me", "him", "her", "them", "us")) else None))
+        names = _words_of(possessor, *(owner.ids if owner else ()))
+        if owner is not None and owner.ids:
+            person = self.people[owner.ids[0]]
+            names |= _words_of(person.name, person.role)
+        names -= _GENERIC  # "person" in "person_mum" names nobody in particular
+        return [i for i in ids if _words_of(str(self.objects[i].properties.get("owner", "")))
+                & names]
 
     def _animal(self, phrase: NounPhrase) -> Referent | None:
         """A pet the scene lists, named or by its kind ("Biscuit", "the dog")."""
@@ -378,16 +381,7 @@ class Grounder:
                 *(str(v) for v in self.objects[i].properties.values()))]
             kept = named or kept
         if phrase.possessor:
-            owner = self._person(NounPhrase(phrase.possessor, head=phrase.possessor,
-                                            pronoun=phrase.possessor if phrase.possessor in (
-                                                "me", "him", "her", "them", "us") else None))
-            names = _words_of(phrase.possessor, *(owner.ids if owner else ()))
-            if owner is not None and owner.ids:
-                person = self.people[owner.ids[0]]
-                names |= _words_of(person.name, person.role)
-            owned = [i for i in kept if _words_of(str(self.objects[i].properties.get(
-                "owner", ""))) & names]
-            kept = owned or kept
+            kept = self._owned_by(kept, phrase.possessor) or kept
         if phrase.contents:
             holding = [i for i in kept if self._holds_substance(
                 self.objects[i], singular(phrase.contents.split()[-1]))]
