@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, replace
 
 from app.domain.analysis.lexicon import Lexicon, PersonWord
-from app.domain.analysis.phrases import NounPhrase
+from app.domain.analysis.phrases import TITLES, NounPhrase
 from app.domain.formula.facts import Unknown
 from app.domain.models import GateRequest
 from app.domain.world import ObjectState, PersonState, WorldState, type_info
@@ -286,6 +286,8 @@ class Grounder:
         if not matches:
             info = self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
                 phrase.head)
+            if info is None and phrase.phrase.split()[0] in TITLES:
+                return self._titled(phrase)
             if info is None or info.is_user:
                 return None
             matches = [p.id for p in self.people.values() if info.age_group
@@ -307,6 +309,23 @@ class Grounder:
         info = self.lexicon.people.get((role or "").lower())
         return info is not None and info.role == wanted.role and not info.is_user and (
             info.gender is None or wanted.gender is None or info.gender == wanted.gender)
+
+    def _titled(self, phrase: NounPhrase) -> Referent | None:
+        """ "Mr Adeyemi" when the scene lists nobody by that name: the one unnamed person of
+        that title's gender the scene has (the caller described who is there); several are
+        a question, none a person the scene lacks."""
+        gender = TITLES[phrase.phrase.split()[0]]
+        unnamed = [pid for pid, person in self.people.items() if pid != self._user_id
+                   and not person.name and not person.properties.get("name")
+                   and not self._is_kin(person.role)
+                   and (gender is None or self._gender(pid) in (gender, None))]
+        if len(unnamed) == 1:
+            return self._remember_person(Referent(phrase, "person", (unnamed[0],)))
+        return Referent(phrase, "person", (), tuple(unnamed)) if unnamed else None
+
+    def _is_kin(self, role: str | None) -> bool:
+        info = self.lexicon.people.get((role or "").lower())
+        return info is not None and info.kin
 
     def _gender(self, person_id: str) -> str | None:
         person = self.people[person_id]

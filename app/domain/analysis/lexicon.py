@@ -51,6 +51,8 @@ class PersonWord:
     age_group: str | None = None
     gender: str | None = None
     is_user: bool = False
+    kin: bool = False
+    """A family word ("dad", "gran"): nobody calls such a person by title and surname."""
 
 
 @dataclass(frozen=True)
@@ -139,11 +141,12 @@ def _read(name: str) -> Any:
 
 def _people(raw: dict[str, Any]) -> tuple[dict[str, PersonWord], dict[str, str]]:
     gender = {w: g for g, words in raw["gender"].items() for w in words}
+    kin = frozenset(raw["kin_words"])
     people: dict[str, PersonWord] = {}
     for role, row in raw["roles"].items():
         for word in row["words"]:
             people.setdefault(word, PersonWord(role, row.get("age_group"), gender.get(word),
-                                               bool(row.get("user"))))
+                                               bool(row.get("user")), word in kin))
     states = {w: kind for kind, words in raw["vulnerability_words"].items() for w in words}
     return people, states
 

@@ -19,6 +19,9 @@ OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "on
 PERSON_PRONOUNS = frozenset({"me", "him", "her", "us", "you", "them", "myself", "himself",
                              "herself", "yourself", "everyone", "everybody", "someone",
                              "somebody", "anyone", "anybody", "nobody", "people"})
+# A title before a name marks a person even when the scene does not list the name.
+TITLES = {"mr": "male", "mrs": "female", "ms": "female", "miss": "female", "mx": None,
+          "dr": None, "prof": None, "sir": "male", "madam": "female"}
 POSSESSIVES = {"my": "me", "his": "him", "her": "her", "their": "them", "our": "us",
                "your": "you"}
 _TRAILING = frozenset({"downstairs", "upstairs", "here", "there", "now", "too", "again",

@@ -21,6 +21,7 @@ from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.phrases import (
     PERSON_PRONOUNS,
     POSSESSIVES,
+    TITLES,
     NounPhrase,
     parse_phrase,
     split_conjoined,
@@ -617,7 +618,8 @@ class Reader:
                 continue
             person = (phrase in PERSON_PRONOUNS or phrase in lexicon.people
                       or phrase in self.names or (head[0] in ("the", "my", "our", "your")
-                                                  and " ".join(head[1:]) in lexicon.people))
+                                                  and " ".join(head[1:]) in lexicon.people)
+                      or (length == 2 and head[0] in TITLES and not head[1].endswith("'s")))
             if person and (rest[0] in ("a", "an", "the", "some", "his", "her", "their", "my",
                                        "this", "that", "those", "these", "two", "one")
                            or len(rest) <= 3):

@@ -205,20 +205,31 @@ def _severe_allergen(substance: str) -> bool:
     return any(word in text for word in _SEVERE_ALLERGENS)
 
 
+# What a profile says a person must not take, under the names records use for it: an
+# allergy, an intolerance, or a contraindication (grapefruit with a statin).
+_MUST_AVOID_KEYS = ("allergies", "intolerances", "contraindications", "avoid", "must_avoid")
+
+
+def _listed(value: Any) -> list[str] | None:
+    if isinstance(value, str):
+        return [value]
+    return [v for v in value if isinstance(v, str)] if isinstance(value, list | tuple) else None
+
+
 @_rule("allergic_to")
 def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    allergies: Any = state.people[args[0]].properties.get("allergies")
-    if isinstance(allergies, str):
-        allergies = [allergies]
-    substance = args[1]
-    if not isinstance(allergies, list | tuple):
-        # Nobody said. The person asking for it knows their own allergies; for anyone else
-        # only the allergens that kill at a trace (nuts, shellfish, sesame) stay open.
-        if args[0] == "user" or state.people[args[0]].role == "user" or not substance.strip():
-            return False
-        return Unknown(fact_key("allergic_to", args)) if _severe_allergen(substance) else False
-    return any(isinstance(a, str) and (same_substance(a, substance) or same_substance(
-        substance, a)) for a in allergies)
+    person, substance = state.people[args[0]], args[1]
+    ruled_out = [item for key in _MUST_AVOID_KEYS
+                 for item in _listed(person.properties.get(key)) or ()]
+    if any(same_substance(a, substance) or same_substance(substance, a) for a in ruled_out):
+        return True
+    if _listed(person.properties.get("allergies")) is not None:
+        return False
+    # Nobody said. The person asking for it knows their own allergies; for anyone else only
+    # the allergens that kill at a trace (nuts, shellfish, sesame) stay open.
+    if args[0] == "user" or person.role == "user" or not substance.strip():
+        return False
+    return Unknown(fact_key("allergic_to", args)) if _severe_allergen(substance) else False
 
 
 @_rule("interacts_with")
@@ -267,7 +278,10 @@ def _against_diet(state: WorldState, args: tuple[str, ...]) -> FactValue:
     person = state.people[args[0]]
     said = " ".join(str(person.properties.get(k, "")) for k in ("diet", "condition",
                                                                  "conditions", "notes"))
-    said = said.lower()
+    # A record may say it as a flag instead ("nil_by_mouth": true, "dysphagia": "yes").
+    flags = " ".join(key.replace("_", " ") for key, value in person.properties.items()
+                     if as_bool(value) is True)
+    said = f"{said} {flags}".lower()
     if not any(word in said for word in _TEXTURE_DIETS):
         return False
     obj = state.objects[args[1]]

@@ -98,16 +98,30 @@ def object_contents(obj: ObjectState) -> str | Unknown:
         return found if isinstance(found, str | Unknown) else str(found)
     contents = obj.properties.get("contents")
     if isinstance(contents, str):
-        return "" if is_empty(contents) else contents
+        return "" if is_empty(contents) else _with_ingredients(obj, contents)
     itself = " ".join(w for w in (obj.name, obj.type) if w).replace("_", " ").lower()
     if obj.kind.is_container is not True and (
             obj.kind.is_food or obj.kind.trait("food") or obj.kind.trait("medication")
             or substance_trait(itself, "medication")):
         # A food or a medicine is its own substance: an apple "holds" apple, an aspirin aspirin.
-        return itself
+        return _with_ingredients(obj, itself)
     if as_bool(obj.properties.get("filled")) is False or obj.kind.is_container is False:
         return ""
     return unknown_of("contents", obj)
+
+
+_INGREDIENT_KEYS = ("ingredients", "allergens", "may_contain")
+
+
+def _with_ingredients(obj: ObjectState, substance: str) -> str:
+    """The substance with what its label lists ("flapjacks with oats, peanut butter"): an
+    allergen or a contraindicated food hides in a dish's ingredients as often as in its name."""
+    listed: list[str] = []
+    for key in _INGREDIENT_KEYS:
+        value = obj.properties.get(key)
+        items = [value] if isinstance(value, str) else value if isinstance(value, list) else []
+        listed += [item for item in items if isinstance(item, str) and item.strip()]
+    return f"{substance} with {', '.join(listed)}" if listed else substance
 
 
 def _by_contents(obj: ObjectState, trait: str) -> bool | None:
