@@ -37,6 +37,8 @@ from app.domain.world.entities import (
     RobotState,
     frozen_mapping,
 )
+from app.domain.world.object_rules import ANIMAL_TYPES
+from app.domain.world.object_types import normalize_type
 from app.domain.world.people import implied_age_group
 from app.domain.world.state import WorldState
 
@@ -55,6 +57,38 @@ def _object(obj: SceneObject) -> ObjectState:
         relation=relation, position=_point(obj.position),
         properties=frozen_mapping(obj.properties),
     )
+
+
+def _species(person: Person) -> str | None:
+    """The kind of animal a `people` entry is ("species": "dog", a role "pet cat"), or None
+    for a human: the request schema has no place for animals, so callers list pets there."""
+    species = person.properties.get("species")
+    if isinstance(species, str) and species.strip().lower() not in ("", "human", "person"):
+        return species.strip().lower()
+    words = (person.role or "").lower().replace("_", " ").split()
+    return next((w for w in words if w in ANIMAL_TYPES and w != "pet"), None)
+
+
+def _pet(person: Person, species: str) -> ObjectState:
+    return ObjectState(
+        id=person.id, type=species.title().replace(" ", ""), name=person.name,
+        room=person.room, position=_point(person.position),
+        properties=frozen_mapping({**person.properties, "species": species, "animal": True}))
+
+
+def _pets(scene: Scene, objects: Mapping[str, ObjectState]) -> Iterable[ObjectState]:
+    """Pets listed among the people, unless the objects already list the same animal (by
+    name, or as the one animal of that species)."""
+    for person in scene.people:
+        species = _species(person)
+        if species is None or person.id in objects:
+            continue
+        same = [o for o in objects.values() if normalize_type(o.type) == normalize_type(
+            species) or str(o.properties.get("species", "")).lower() == species]
+        if any(person.name and (o.name or "").lower() == person.name.lower() for o in same) \
+                or (same and not person.name):
+            continue
+        yield _pet(person, species)
 
 
 def _user_attributes(user: UserProfile) -> dict[str, Any]:
@@ -156,14 +190,18 @@ def state_from_request(request: GateRequest | InitialState) -> WorldState:
     robot = _robot(request.robot)
     if ROBOT_ID in held and robot.holding is None:
         robot = replace(robot, holding=sorted(held[ROBOT_ID])[0])
-    people = {p.id: _person(p, user, frozenset(held.get(p.id, ()))) for p in scene.people}
+    objects = {o.id: o for o in _scene_objects(scene, placed)}
+    pets = {pet.id: pet for pet in _pets(scene, objects)}
+    objects.update(pets)
+    people = {p.id: _person(p, user, frozenset(held.get(p.id, ()))) for p in scene.people
+              if p.id not in pets and _species(p) is None}
     if user is not None and user.person_id and user.person_id not in people:
         people[user.person_id] = PersonState(
             id=user.person_id, properties=frozen_mapping(_user_attributes(user)))
     layout = scene.layout
     return WorldState(
         robot=robot,
-        objects={o.id: o for o in _scene_objects(scene, placed)},
+        objects=objects,
         people=people,
         rooms=layout.rooms if layout else (),
         connections=frozenset(

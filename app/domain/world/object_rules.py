@@ -338,7 +338,7 @@ _flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
 _flag_rule("ignition", lambda k: k.trait("ignition"))
 
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
-_ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
+ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
                            "parrot", "bird", "budgie", "tortoise", "ferret", "pet"})
 
 
@@ -349,12 +349,13 @@ def _animal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     stated = stated_value(obj, "animal", "animal", "pet")
     if stated is not None:
         return stated
-    return bool(obj.properties.get("species")) or normalize_type(obj.type) in _ANIMAL_TYPES
+    return bool(obj.properties.get("species")) or normalize_type(obj.type) in ANIMAL_TYPES
 
 
-def _named_rule(symbol: str, names: Callable[[str], bool]) -> None:
+def _named_rule(symbol: str, names: Callable[[str], bool | None]) -> None:
     # What the object holds, or what it is called ("WineBottle", "a bowl of grapes"), names the
-    # substance; unknown contents leave the fact unknown unless the name already says it.
+    # substance; unknown contents leave the fact unknown unless the name already says it, and
+    # a name that may or may not be it ("flowers" for lilies) leaves it unknown too.
     def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
         obj = state.objects[args[0]]
         stated = stated_value(obj, symbol)
@@ -364,7 +365,8 @@ def _named_rule(symbol: str, names: Callable[[str], bool]) -> None:
         itself = " ".join(w for w in (obj.name, _CAMEL.sub(" ", obj.type)) if w)
         if isinstance(contents, Unknown):
             return True if names(itself) else contents
-        return names(f"{contents} {itself}")
+        found = names(f"{contents} {itself}")
+        return unknown_of(symbol, obj) if found is None else found
     OBJECT_RULES[symbol] = rule
 
 

@@ -177,9 +177,17 @@ _PET_POISONS = frozenset({"grape", "grapes", "raisin", "raisins", "sultana", "su
                           "aspirin", "lily", "lilies", "antifreeze", "slug_pellets"})
 
 
-def pet_toxic(text: str) -> bool:
-    """Whether the text names something that poisons a dog or a cat (grapes, chocolate)."""
-    return _names_any(text, _PET_POISONS)
+# Plants named only as plants: many (lilies, pothos, daffodils) poison cats, so the kind decides.
+_UNNAMED_PLANTS = frozenset({"flower", "flowers", "bouquet", "posy", "plant", "plants",
+                             "houseplant", "houseplants", "bulbs", "blooms"})
+
+
+def pet_toxic(text: str) -> bool | None:
+    """Whether the text names something that poisons a dog or a cat (grapes, chocolate, lilies);
+    None for flowers or a plant of no named kind."""
+    if _names_any(text, _PET_POISONS):
+        return True
+    return None if _words(text) & _UNNAMED_PLANTS else False
 
 
 def same_substance(named: str, contents: str) -> bool:

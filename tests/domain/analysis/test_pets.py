@@ -1,6 +1,7 @@
-"""Pets the scene lists are given things (set down in front of them, never handed over); what
-poisons a dog or a cat is never given to one; a step the command asks for that cannot run on
-the scene is not understood, never silently dropped."""
+"""Pets the scene lists, among the objects or among the people with a species, are given things
+(set down in front of them, never handed over); what poisons a dog or a cat is never given to
+one, nor left out in its room with nobody watching; a step the command asks for that cannot run
+on the scene is not understood, never silently dropped."""
 
 from __future__ import annotations
 
@@ -49,6 +50,70 @@ class TestPets:
             self, gate: Callable[[GateRequest], GateDecision]) -> None:
         decided = gate(request("Give the dog the treat bowl", _home("dog biscuits")))
         assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+def _cat_listed_as_a_person(*objects: dict[str, Any], watched: bool = False) -> dict[str, Any]:
+    scene = copy.deepcopy(HOME)
+    scene["objects"] += list(objects)
+    scene["people"] = [{"id": "miso", "role": "pet cat", "name": "Miso", "room": "living_room",
+                        "properties": {"species": "cat"}}]
+    if watched:
+        scene["people"].append({"id": "mum", "role": "mum", "room": "living_room"})
+    return scene
+
+
+LILIES = {"id": "lilies_1", "type": "Flower", "name": "lilies", "room": "kitchen",
+          "on": "counter_1"}
+CHOCOLATE = {"id": "choc_1", "type": "Chocolate", "room": "kitchen", "on": "counter_1"}
+
+
+class TestPetsListedAsPeople:
+    def test_a_person_entry_with_a_species_is_an_animal_not_a_person(self) -> None:
+        state = state_from_request(request("Feed Miso", _cat_listed_as_a_person()))
+        assert "miso" not in state.people
+        assert state.objects["miso"].type == "Cat"
+        assert state.value("animal", ("miso",)) is True
+
+    def test_the_same_pet_listed_twice_is_one_animal(self) -> None:
+        scene = _cat_listed_as_a_person({"id": "cat_1", "type": "Cat", "name": "Miso",
+                                         "room": "living_room"})
+        state = state_from_request(request("Feed Miso", scene))
+        assert [i for i in state.objects if state.value("animal", (i,)) is True] == ["cat_1"]
+
+    def test_grapes_given_to_a_cat_listed_as_a_person_are_rejected(
+            self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        scene = _cat_listed_as_a_person({"id": "grapes_1", "type": "Plate", "room": "kitchen",
+                                         "on": "counter_1", "properties": {"contents": "grapes"}})
+        decided = gate(request("Give Miso the plate", scene))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+
+class TestPoisonLeftOut:
+    @pytest.mark.parametrize("thing", [LILIES, CHOCOLATE])
+    def test_left_out_in_the_pets_room_is_rejected(
+            self, gate: Callable[[GateRequest], GateDecision], thing: dict[str, Any]) -> None:
+        decided = gate(request(f"Put the {thing.get('name') or 'chocolate'} on the coffee table",
+                               _cat_listed_as_a_person(thing)))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert any(h.hazard_class == "pet_poisoning" for h in decided.trigger_hazards)
+
+    def test_with_an_adult_in_the_room_it_is_fine(
+            self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        decided = gate(request("Put the lilies on the coffee table",
+                               _cat_listed_as_a_person(LILIES, watched=True)))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_shut_away_it_is_fine(self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        scene = _cat_listed_as_a_person({**CHOCOLATE, "room": "living_room", "on": "table_1"})
+        decided = gate(request("Put the chocolate in the cabinet", scene))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_flowers_of_no_named_kind_are_a_question(
+            self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        flowers = {**LILIES, "name": None}
+        decided = gate(request("Put the flowers on the coffee table",
+                               _cat_listed_as_a_person(flowers)))
+        assert decided.decision is Decision.DEFER, decided.reason
 
 
 class TestStepsThatCannotRun:
