@@ -51,6 +51,8 @@ class Grounded:
     instrument: Referent | None = None
     beside: Referent | None = None
     """What the thing is set down next to ("on the bench next to the soldering iron")."""
+    destination_word: str | None = None
+    """The preposition that named the destination ("by" the door, "against" it)."""
     problem: str | None = None
     cancelled: bool = False
     """Taken back by a later negation ("well don't chuck them")."""
@@ -96,6 +98,7 @@ SETTINGS = frozenset({
 _LOCATIVE = frozenset({"on", "in", "inside", "under", "underneath", "by", "next to", "beside",
                        "off", "near", "behind", "on top of", "at"})
 _BESIDE = frozenset({"next to", "beside", "by", "near", "against", "alongside"})
+_NEXT_TO = _BESIDE - {"against"}
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
                       "back into"})
 _ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
@@ -166,7 +169,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             found = g.any(np, place=True)
             if found.kind == "person" and prep in ("to", "over to") and recipient is None:
                 grounded.recipient = found
-            grounded.destination = found
+            grounded.destination, grounded.destination_word = found, prep
     if grounded.destination is not None and grounded.destination.ids and set(
             grounded.destination.ids) <= own:
         grounded.destination = None  # "put the roast in": not in itself
@@ -349,6 +352,10 @@ def _put(builder: PlanBuilder, grounded: Grounded) -> None:
             here = here or builder.surface(builder.state.room_of(obj), avoid=obj)
         beside = grounded.beside.id if grounded.beside is not None and \
             grounded.beside.kind == "object" else None
+        if grounded.destination_word in _NEXT_TO and here == target and \
+                builder.state.value("exit_way", (here,)) is True:
+            # "by the door": on the floor or a surface of its room, beside it, not against it
+            here, beside = builder.surface(builder.state.room_of(here), avoid=obj), here
         builder.place(obj, here, relation=builder.relation_for(here), beside=beside)
 
 

@@ -66,6 +66,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("on_floor", "the object rests on the floor"),
     _object_flag("in_path", "the object lies on a walkway, stair or doorway people use"),
     _object_flag("blocks_exit", "the object blocks a door, exit or escape route"),
+    _object_flag("exit_way", "the object is a way out or through (door, gate, exit, stair, hall)"),
+    _object_flag("bulky", "the object is big enough to narrow a doorway (a crate, a pushchair)"),
     _object_flag("walking_aid", "the object is a walking aid (walker, cane, crutches, wheelchair)"),
     _object_flag("life_support", "the object keeps someone breathing or fed (oxygen "
                  "concentrator, ventilator, feeding pump)"),

@@ -20,7 +20,6 @@ from app.domain.world.entities import ObjectState
 from app.domain.world.object_types import TypeInfo, normalize_type
 from app.domain.world.substances import (
     alcoholic,
-    bite_sized,
     is_empty,
     pet_toxic,
     same_substance,
@@ -33,7 +32,6 @@ if TYPE_CHECKING:
 Rule = Callable[["WorldState", tuple[str, ...]], FactValue]
 OBJECT_RULES: dict[str, Rule] = {}
 
-HEAVY_KG = 5.0
 _TRUE_WORDS = frozenset({"true", "yes", "on", "1"})
 _FALSE_WORDS = frozenset({"false", "no", "off", "0"})
 
@@ -442,57 +440,6 @@ def _metal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     if concept is not None and "metal" in concept.props:
         return True
     return _decide("metal", obj, obj.kind.material("Metal"), obj.kind.traits.get("metal"))
-
-
-@_rule("small")
-def _small(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    # Choking-hazard size: fits a cylinder about 3.2 cm wide and 5.7 cm deep. AI2-THOR's
-    # median bounding box of the type stands in for the instance's size.
-    obj = state.objects[args[0]]
-    stated = stated_value(obj, "small")
-    if stated is not None:
-        return stated
-    if obj.kind.trait("small"):
-        return True
-    contents = object_contents(obj)
-    if isinstance(contents, str) and contents and bite_sized(contents):
-        return True  # a bowl of whole grapes hands a child pieces of choking size
-    size = obj.kind.size_m
-    if size is not None and obj.kind.known:
-        if size[0] <= 0.057 and size[1] <= 0.032:
-            return True
-        if size[1] > 0.045:
-            return False
-    return unknown_of("small", obj)
-
-
-@_rule("mass_kg")
-def _mass(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    obj = state.objects[args[0]]
-    if "mass_kg" in obj.facts:
-        return obj.facts["mass_kg"]
-    mass = obj.properties.get("mass_kg")
-    if isinstance(mass, int | float) and not isinstance(mass, bool):
-        return float(mass)
-    known = obj.kind.mass_kg
-    if known is not None and known[0] == known[1]:
-        return known[0]
-    return unknown_of("mass_kg", obj)
-
-
-@_rule("heavy")
-def _heavy(state: WorldState, args: tuple[str, ...]) -> FactValue:
-    obj = state.objects[args[0]]
-    stated = stated_value(obj, "heavy")
-    if stated is not None:
-        return stated
-    mass = state.value("mass_kg", args)
-    if isinstance(mass, float):
-        return mass >= HEAVY_KG
-    known = obj.kind.mass_kg
-    if known is not None and (known[0] >= HEAVY_KG or known[1] < HEAVY_KG):
-        return known[0] >= HEAVY_KG
-    return unknown_of("heavy", obj)
 
 
 @_rule("contents")

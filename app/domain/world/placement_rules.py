@@ -115,6 +115,14 @@ _walkway_rule("in_path", lambda state, blocked: True)
 _walkway_rule("blocks_exit", _names_exit)
 
 
+@_rule("exit_way")
+def _exit_way(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # A door, gate, stair, hall or exit: what is set against or in front of it is in the way
+    # out, whatever the reader makes of "against", "in front of" or "by".
+    stated = stated_value(state.objects[args[0]], "exit_way", "exit", "fire_exit")
+    return stated if stated is not None else _names_exit(state, args[0])
+
+
 @_rule("elevated")
 def _elevated(state: WorldState, args: tuple[str, ...]) -> FactValue:
     obj = state.objects[args[0]]

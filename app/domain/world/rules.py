@@ -1,6 +1,6 @@
 """Every vocabulary symbol's rule in one table, keyed by symbol name.
 
-In: nothing. Out: `RULES`, merged from the object, placement and agent rule modules plus
+In: nothing. Out: `RULES`, merged from the object, size, placement and agent rule modules plus
 `is_a`. A test checks that every symbol of `app.domain.formula.vocabulary` has a rule.
 Fails: never.
 """
@@ -16,6 +16,7 @@ from app.domain.world.entities import ROBOT_ID
 from app.domain.world.object_rules import OBJECT_RULES, Rule
 from app.domain.world.object_types import normalize_type
 from app.domain.world.placement_rules import PLACEMENT_RULES
+from app.domain.world.size_rules import SIZE_RULES
 
 if TYPE_CHECKING:
     from app.domain.world.state import WorldState
@@ -50,4 +51,5 @@ def _is_a(state: WorldState, args: tuple[str, ...]) -> FactValue:
 
 __all__ = ["RULES", "Rule"]
 
-RULES: dict[str, Rule] = {**OBJECT_RULES, **PLACEMENT_RULES, **AGENT_RULES, "is_a": _is_a}
+RULES: dict[str, Rule] = {**OBJECT_RULES, **SIZE_RULES, **PLACEMENT_RULES, **AGENT_RULES,
+                          "is_a": _is_a}
