@@ -82,6 +82,8 @@ class Lexicon:
     particles: frozenset[str]
     manner: dict[str, tuple[tuple[str, ...], ...]]
     harm_words: frozenset[str]
+    health_words: frozenset[str]
+    """Words that make a remark about someone's health or needs, never small talk."""
     private_things: frozenset[str]
     rooms: dict[str, str]
     """room phrase -> canonical room name."""
@@ -184,6 +186,7 @@ def load_lexicon() -> Lexicon:
         particles=frozenset(words["particles"]),
         manner={k: _phrases(v) for k, v in words["manner"].items()},
         harm_words=frozenset(words["harm_words"]),
+        health_words=frozenset(words["health_words"]),
         private_things=frozenset(words["private_things"]),
         rooms=rooms,
         people=people,

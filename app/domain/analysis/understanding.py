@@ -57,6 +57,7 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
               for n in (o.name, o.properties.get("name")) if n
               and state.value("animal", (o.id,)) is True}  # "give Biscuit the ..."
     reading = Reader(lexicon, names).read(request.command)
+    proper = proper_names(request.command)
     grounder = Grounder(state, request, lexicon)
     builder = PlanBuilder(grounder)
     unknowns: list[UnknownFact] = []
@@ -75,7 +76,7 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
         if _leave_as_is(clause):
             continue  # "leave it", "leave the mess": a manner cue for the rest, not a step
         problem = _unreadable(clause, lexicon)
-        if problem is not None and actionable and _remark(clause, lexicon, names):
+        if problem is not None and actionable and _remark(clause, lexicon, names | proper):
             grounder.remember(clause.text)
             others.append(clause)
             continue
@@ -203,9 +204,19 @@ def _unreadable(clause: Clause, lexicon: Lexicon) -> str | None:
     return None
 
 
+_PROPER = re.compile(r"(?<![.!?:;\n]\s)(?<![.!?:;\n\d])(?<!^)\b([A-Z][a-z]+)(?:'s)?\b")
+
+
+def proper_names(command: str) -> set[str]:
+    """Capitalised words inside a sentence ("... the fish pie, Sam's allergic"): names, which
+    no dictionary lists, so a remark that uses them is still plain English."""
+    return {m.group(1).lower() for m in _PROPER.finditer(command.strip())} - {"i"}
+
+
 def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
-    """A verbless remark or a vague goal beside a task: plain English (or the scene's names)
-    and no harm."""
+    """A verbless remark or a vague goal beside a task: plain English (or the scene's names),
+    no harm, and nothing about someone's health or needs (that is for the gate to apply, or
+    to ask about)."""
     if (clause.schemas and clause.schemas != ("goal",)) or (
             clause.verb is not None and not clause.schemas and (clause.objects or clause.roles)
             and not sounds_like_statement(clause.text)
@@ -213,6 +224,8 @@ def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
         return False  # "wedge the door open": an instruction in words the robot lacks
     words = [w for w in _CONTRACTION.sub("", clause.text).replace("'", " ").split()
              if w.isalpha()]
+    if {w.lower() for w in words} & lexicon.health_words:
+        return False
     return all(lexicon.is_english(w) or w in names for w in words) and not harm_stated(
         clause.text, lexicon)
 

@@ -112,8 +112,12 @@ def _person(person: Person, user: UserProfile | None, holding: frozenset[str]) -
             "asleep", "sleeping", "lying_asleep"):
         properties["cognitive_state"] = "typical"
     properties.setdefault("mobility", "independent")
+    # Records often keep the name among the properties ("properties": {"name": "Maisie"}).
+    named = properties.get("name")
     return PersonState(
-        id=person.id, role=person.role, name=person.name, room=person.room,
+        id=person.id, role=person.role,
+        name=person.name or (named if isinstance(named, str) and named.strip() else None),
+        room=person.room,
         posture=person.posture, position=_point(person.position),
         properties=frozen_mapping(properties), holding=holding,
     )

@@ -110,3 +110,26 @@ class TestTitledNames:
         decided = gate(request("Take Mr Adeyemi the glass", scene))
         assert decided.decision is Decision.DEFER
         assert decided.question, decided.reason
+
+
+class TestNamesAndRemarks:
+    def test_a_name_kept_among_the_properties_names_the_person(self, gate: Gate) -> None:
+        scene = _scene(TestContraindications.JUICE, {"role": "resident", "properties": {
+            "name": "Ada", "age_group": "older_adult", "contraindications": ["grapefruit"]}})
+        decided = gate(request("Give Ada the glass", scene))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_a_remark_with_a_capitalised_name_is_small_talk(self, gate: Gate) -> None:
+        decided = gate(request("Put the potato in the microwave, Olly is on his way home"))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_a_remark_about_what_someone_must_not_eat_is_never_passed_over(
+            self, gate: Gate) -> None:
+        decided = gate(request("Put the potato in the microwave, Olly is allergic to it"))
+        assert decided.decision is Decision.DEFER
+        assert "allergic" in (decided.question or "") + decided.reason
+
+    def test_waking_someone_gently_frightens_nobody(self, gate: Gate) -> None:
+        decided = gate(request("Gently wake dad for his tea"))
+        assert all(h.hazard_class != "startling" for h in decided.trigger_hazards)
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
