@@ -3,7 +3,7 @@
 // search and paging all happen on the server, so a page is a slice of the whole sorted list.
 import { $, api, el, problemText, debounced } from "./api.js";
 
-const listing = { sort: "id", order: "asc", offset: 0, limit: 20, total: 0 };
+const listing = { sort: "id", order: "asc", offset: 0, limit: 20, total: 0, run: 0 };
 let selectTemplate = () => {};
 
 // A cell for a dotted or snake_case name that may wrap after its '.' and '_' (never inside a
@@ -50,7 +50,9 @@ export async function loadTemplates() {
   });
   if ($("search").value.trim()) params.set("q", $("search").value.trim());
   if ($("status-filter").value) params.set("status", $("status-filter").value);
+  const run = ++listing.run;
   const result = await api("GET", "/templates?" + params.toString());
+  if (run !== listing.run) return;  // a newer sort, page or search is on its way
   const list = $("template-list");
   if (!result.ok) {
     list.replaceChildren();
