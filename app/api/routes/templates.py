@@ -26,6 +26,7 @@ router = APIRouter(tags=["templates"])
 # before this bound), so a 422 names the parameter instead.
 MAX_VERSION = 2**31 - 1
 MAX_PAGE = 500
+MAX_OFFSET = 2**31 - 1  # like a version: bounded so a 422 names it, never a silent overflow
 
 _DOCUMENT = Body(  # FastAPI's way to take the raw JSON body, so our validator reports on it
     ...,
@@ -84,7 +85,7 @@ def list_templates(
         description="The column to sort by (severity by how bad, not alphabetically); ties "
                     "keep id order.")] = TemplateSortKey.ID,
     order: Annotated[SortOrder, Query(description="Ascending or descending.")] = SortOrder.ASC,
-    offset: Annotated[int, Query(ge=0, le=MAX_VERSION,
+    offset: Annotated[int, Query(ge=0, le=MAX_OFFSET,
                                  description="Matches to skip before the page.")] = 0,
     limit: Annotated[int | None, Query(
         ge=1, le=MAX_PAGE, description="Page size; without it, every match from `offset` "
