@@ -8,7 +8,8 @@
 - The library table: sorting by a column both ways, paging, header cells aligned with the row
   cells and no column cut off.
 - Whole-word search: "hot" finds the hot-liquid templates, never the photographing ones.
-- Versions: a template revised once shows a line diff of its two versions.
+- Versions: a template revised once shows a line diff of its two versions; editing it in the
+  form and saving a new version shows that version's diff.
 
 Fixtures (browser, server, screenshots) are in this folder's conftest.py.
 """
@@ -271,3 +272,14 @@ class TestCuratorPage:
         Select(browser.find_element(By.ID, "diff-to")).select_by_value("1")
         _wait_for(browser, lambda d: _text_of(d, "diff-summary") == "the same version",
                   "same version")
+
+        browser.find_element(By.ID, "detail-edit").click()
+        card = browser.find_element(By.CSS_SELECTOR, "#condition-list .condition")
+        card.find_element(By.CLASS_NAME, "condition-description").send_keys(" Ever.")
+        browser.find_element(By.ID, "save-version").click()
+        _wait_for(browser, lambda d: "version 3" in _text_of(d, "result"), "third version")
+        _wait_for(browser, lambda d: d.find_element(By.ID, "diff-to").get_attribute("value")
+                  == "3", "the diff offers the new version")
+        added = [" ".join(e.text.split())
+                 for e in browser.find_elements(By.CSS_SELECTOR, "#diff .diff-added")]
+        assert added == ['+ "description": "Never drop a fragile object. Ever.",']

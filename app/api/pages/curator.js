@@ -147,6 +147,8 @@ async function write(method, path) {
              "ok");
   renderMessages([], result.data.warnings || []);
   await loadTemplates();
+  // A new version of the template on show: its diff now offers that version.
+  if (page.current && page.current.id === result.data.id) await showTemplate(result.data.id);
 }
 
 function saveVersion() {
