@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint install browsers bench bench-sealed perf sim clean fuzz faults
+.PHONY: run test lint install browsers web bench bench-sealed perf sim clean fuzz faults
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -26,6 +26,12 @@ browsers:
 	  { if [ -n "$$CI" ]; then echo "browsers: cannot install chromium in CI" >&2; exit 1; \
 	    else echo "browsers: could not install chromium (needs root and apt);" \
 	      "the browser tests will be skipped" >&2; fi; }
+
+## The curator page's editor bundle (CodeMirror 6 and a line diff, from the npm registry) built
+## by esbuild from web/ into app/api/pages/vendor/editor.js. The bundle is committed, so serving
+## the page needs no Node; run this after changing web/ and commit the result.
+web:
+	cd web && npm ci --no-audit --no-fund && npm run build
 
 ## Run every test (SQLite and PostgreSQL for real, the curator page in headless Chromium),
 ## then the static checks.

@@ -125,16 +125,3 @@ def deprecate(services: Services, template_id: str) -> HazardTemplate:
     services.templates.refresh()
     return stored
 
-
-def search(templates: list[HazardTemplate], text: str | None) -> list[HazardTemplate]:
-    """The templates whose id, name, class or description contain every word of `text`."""
-    words = (text or "").lower().split()
-    if not words:
-        return templates
-
-    def haystack(template: HazardTemplate) -> str:
-        return " ".join(
-            (template.id, template.name, template.hazard_class, template.description)
-        ).lower()
-
-    return [t for t in templates if all(word in haystack(t) for word in words)]

@@ -1,37 +1,30 @@
 """The curator page in headless Chromium, against a real uvicorn server on loopback.
 
-The whole loop through the page: a request waits for a template; the curator signs in with a
-key, searches the library, starts a template from the pending extension's skeleton, sees live
-validation point at a bad formula's line and column, fixes it, creates the draft, activates it,
-and re-evaluates the waiting request, which is then authorized.
+- The whole loop through the page: a request waits for a template; the curator signs in with a
+  key, starts a template from the pending extension's skeleton, writes it through the form
+  (fields, a guard, its formula typed into the code editor), sees the editor underline a bad
+  predicate at the line and column the server gave, fixes it by typing, creates the draft,
+  activates it and re-evaluates the waiting request, which is then authorized.
+- The library table: sorting by a column both ways, paging, header cells aligned with the row
+  cells and no column cut off.
+- Whole-word search: "hot" finds the hot-liquid templates, never the photographing ones.
+- Versions: a template revised once shows a line diff of its two versions; editing it in the
+  form and saving a new version shows that version's diff.
 
-Chromium and its driver come from Debian (`make browsers`). Without them the test skips outside
-CI (saying why) and fails in CI, where `make test` installs them first.
+Fixtures (browser, server, screenshots) are in this folder's conftest.py.
 """
 
 from __future__ import annotations
 
-import json
-import os
-import shutil
-import socket
-import threading
-import time
-from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 import httpx
-import pytest
-import uvicorn
 
-from app.config import REPO_ROOT, Settings
-from app.main import create_app
+from app.domain.models import Severity
 from app.services.access import issue_api_key
 from app.store.records import ApiKeyRole
+from tests.browser.conftest import screenshot
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-CHROMEDRIVER = "/usr/bin/chromedriver"
 WAIT_SECONDS = 20.0
 
 SLICE_REQUEST: dict[str, Any] = {
@@ -52,77 +45,22 @@ SLICE_REQUEST: dict[str, Any] = {
               "skills": ["navigate", "pick", "place", "slice"], "sensors": ["rgbd_camera"]},
 }
 
-
-def _browser_missing() -> str | None:
-    if CHROMIUM is None:
-        return "chromium is not installed (run `make browsers`, as root with apt)"
-    if not os.access(CHROMEDRIVER, os.X_OK):
-        return f"{CHROMEDRIVER} is missing (install Debian's chromium-driver: `make browsers`)"
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        return "selenium is not installed (pip install -e '.[dev]')"
-    return None
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Any]:
-    missing = _browser_missing()
-    if missing is not None:
-        if os.environ.get("CI"):
-            pytest.fail(f"browser tests must run in CI: {missing}")
-        print(f"skipping the browser test: {missing}")
-        pytest.skip(missing)
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-
-    os.environ.setdefault("SE_OFFLINE", "true")  # never let Selenium download a browser
-    options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", "--window-size=1400,1000"):
-        options.add_argument(flag)
-    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
-    try:
-        yield driver
-    finally:
-        driver.quit()
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port: int = sock.getsockname()[1]
-        return port
-
-
-@pytest.fixture
-def server(tmp_path: Path) -> Iterator[tuple[str, Any]]:
-    """A uvicorn server on a library without sharp_laceration templates; (base URL, app)."""
-    library = tmp_path / "lib"
-    shutil.copytree(REPO_ROOT / "templates_db", library)
-    (library / "sharp.yaml").unlink()
-    app = create_app(Settings(database_url=f"sqlite:///{tmp_path / 'page.db'}",
-                              templates_dir=library))
-    port = _free_port()
-    config = uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning")
-    uvicorn_server = uvicorn.Server(config)
-    thread = threading.Thread(target=uvicorn_server.run, daemon=True)
-    thread.start()
-    base = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline:
-        try:
-            if httpx.get(base + "/readyz", timeout=1).status_code == 200:
-                break
-        except httpx.HTTPError:
-            time.sleep(0.1)
-    else:
-        raise RuntimeError("server did not become ready")
-    yield base, app
-    uvicorn_server.should_exit = True
-    thread.join(timeout=20)
+# Every header cell against the first row's cell below it, and the table against its frame.
+ALIGNMENT_SCRIPT = """
+const heads = [...document.querySelectorAll('#template-table thead th')];
+const cells = [...document.querySelectorAll('#template-list tr:first-child td')];
+const frame = document.querySelector('.table-frame');
+return {
+  columns: heads.map((th, i) => {
+    const a = th.getBoundingClientRect(), b = cells[i].getBoundingClientRect();
+    return [a.left, a.width, b.left, b.width];
+  }),
+  cellCount: cells.length,
+  overflow: frame.scrollWidth - frame.clientWidth,
+  lastRight: heads[heads.length - 1].getBoundingClientRect().right,
+  frameRight: frame.getBoundingClientRect().right,
+};
+"""
 
 
 def _wait_for(driver: Any, condition: Any, what: str) -> Any:
@@ -138,14 +76,33 @@ def _text_of(driver: Any, element_id: str) -> str:
     return text
 
 
-def _type_template(driver: Any, document: dict[str, Any]) -> None:
+def _sign_in(driver: Any, base: str, app: Any) -> str:
     from selenium.webdriver.common.by import By
 
-    editor = driver.find_element(By.ID, "editor")
-    driver.execute_script(
-        "arguments[0].value = arguments[1];"
-        "arguments[0].dispatchEvent(new Event('input', {bubbles: true}));",
-        editor, json.dumps(document, indent=2))
+    _, secret = issue_api_key(app.state.services.repository, ApiKeyRole.CURATOR, "page")
+    driver.get(base + "/curator")
+    _wait_for(driver, lambda d: d.execute_script("return document.body.dataset.ready"),
+              "page wired")
+    driver.find_element(By.ID, "api-key").send_keys(secret)
+    driver.find_element(By.ID, "use-key").click()
+    _wait_for(driver, lambda d: "curator" in _text_of(d, "whoami"), "signed in")
+    return secret
+
+
+def _column(driver: Any, index: int) -> list[str]:
+    cells: list[str] = driver.execute_script(
+        "return [...document.querySelectorAll('#template-list tr')]"
+        ".map((row) => row.cells[arguments[0]].textContent);", index)
+    return cells
+
+
+def _shown_ids(driver: Any) -> list[str]:
+    return _column(driver, 0)
+
+
+def _listing(base: str, **params: Any) -> dict[str, Any]:
+    body: dict[str, Any] = httpx.get(base + "/templates", params=params, timeout=10).json()
+    return body
 
 
 class TestCuratorPage:
@@ -153,23 +110,12 @@ class TestCuratorPage:
         self, browser: Any, server: tuple[str, Any]
     ) -> None:
         from selenium.webdriver.common.by import By
+        from selenium.webdriver.common.keys import Keys
 
         base, app = server
         waiting = httpx.post(base + "/gate", json=SLICE_REQUEST, timeout=30).json()
         assert waiting["defer_kind"] == "extend_library"
-        _, secret = issue_api_key(app.state.services.repository, ApiKeyRole.CURATOR, "page")
-
-        browser.get(base + "/curator")
-        browser.find_element(By.ID, "api-key").send_keys(secret)
-        browser.find_element(By.ID, "use-key").click()
-        _wait_for(browser, lambda d: "curator" in _text_of(d, "whoami"), "signed in")
-
-        browser.find_element(By.ID, "search").send_keys("hot liquid")
-        _wait_for(browser, lambda d: "templates" in _text_of(d, "template-count")
-                  and 0 < len(d.find_elements(By.CSS_SELECTOR, "#template-list tr")) < 20,
-                  "search results")
-        rows = browser.find_elements(By.CSS_SELECTOR, "#template-list tr")
-        assert all("sharp" not in row.text for row in rows)
+        _sign_in(browser, base, app)
 
         group = _wait_for(browser, lambda d: d.find_element(
             By.CSS_SELECTOR, "#pending .group[data-hazard-class='sharp_laceration']"),
@@ -179,22 +125,43 @@ class TestCuratorPage:
         _wait_for(browser, lambda d: _text_of(d, "validation-status") == "invalid",
                   "skeleton validated")
         assert "at least one invariant, guard or abort" in _text_of(browser, "messages")
+        form = browser.find_element(By.ID, "template-form")
+        template_id = form.find_element(By.NAME, "id").get_attribute("value")
+        assert form.find_element(By.NAME, "hazard_class").get_attribute("value") == \
+            "sharp_laceration"
 
-        skeleton = json.loads(browser.find_element(By.ID, "editor").get_attribute("value"))
+        name = form.find_element(By.NAME, "name")
+        name.clear()
+        name.send_keys("Blade thrown in the kitchen")
+        browser.find_element(By.CSS_SELECTOR, ".add-condition[data-kind='guard']").click()
+        card = browser.find_element(By.CSS_SELECTOR, "#condition-list .condition")
+        card.find_element(By.CLASS_NAME, "condition-id").send_keys("never_throw_blade")
+        card.find_element(By.CLASS_NAME, "condition-action").send_keys("ThrowObject")
+        card.find_element(By.CLASS_NAME, "condition-description").send_keys(
+            "Never throw the blade.")
         formula = "@object != $obj or not sharpp($obj)"
-        guard = {"id": "never_throw_blade", "action": "ThrowObject", "formula": formula,
-                 "description": "Never throw the blade."}
-        _type_template(browser, {**skeleton, "guards": [guard]})
-        position = f"line 1, column {formula.index('sharpp') + 1}"
-        _wait_for(browser, lambda d: position in _text_of(d, "messages"), "error position")
-        assert "body.guards.0.formula" in _text_of(browser, "messages")
+        editor = card.find_element(By.CSS_SELECTOR, ".cm-content")
+        editor.click()
+        editor.send_keys(formula)
 
-        guard["formula"] = formula.replace("sharpp", "sharp")
-        _type_template(browser, {**skeleton, "guards": [guard]})
+        position = f"line 1, column {formula.index('sharpp') + 1}"
+        _wait_for(browser, lambda d: position in card.find_element(
+            By.CLASS_NAME, "condition-issues").text, "inline error position")
+        assert "body.guards.0.formula" in _text_of(browser, "messages")
+        underlined = _wait_for(browser, lambda d: card.find_elements(
+            By.CSS_SELECTOR, ".cm-lintRange-error"), "the editor underlines the error")
+        assert underlined[0].text == "sharpp"
+        screenshot(browser, "curator-editor-inline-error", height=1800)
+
+        editor.send_keys(Keys.END, *[Keys.ARROW_LEFT] * len("($obj)"), Keys.BACKSPACE)
         _wait_for(browser, lambda d: _text_of(d, "validation-status") == "valid", "valid")
+        assert not card.find_elements(By.CSS_SELECTOR, ".cm-lintRange-error")
 
         browser.find_element(By.ID, "create").click()
         _wait_for(browser, lambda d: "draft" in _text_of(d, "result"), "draft stored")
+        stored = httpx.get(f"{base}/templates/{template_id}", timeout=10).json()
+        assert stored["name"] == "Blade thrown in the kitchen"
+        assert stored["guards"][0]["formula"] == formula.replace("sharpp", "sharp")
         browser.find_element(By.ID, "activate").click()
         _wait_for(browser, lambda d: "now active" in _text_of(d, "result"), "activated")
 
@@ -208,3 +175,112 @@ class TestCuratorPage:
         assert "authorize" in _text_of(browser, "result")
         pending = httpx.get(base + "/extensions/pending", timeout=10).json()
         assert pending["count"] == 0
+
+    def test_table_sorts_pages_and_keeps_headers_over_their_columns(
+        self, browser: Any, server: tuple[str, Any]
+    ) -> None:
+        from selenium.webdriver.common.by import By
+
+        base, app = server
+        _sign_in(browser, base, app)
+        total = _listing(base)["total"]
+        _wait_for(browser, lambda d: len(_shown_ids(d)) == 20, "first page")
+        assert _text_of(browser, "page-position") == f"page 1 of {-(-total // 20)}"
+
+        layout = browser.execute_script(ALIGNMENT_SCRIPT)
+        assert layout["cellCount"] == 6
+        for head_left, head_width, cell_left, cell_width in layout["columns"]:
+            assert abs(head_left - cell_left) < 1 and abs(head_width - cell_width) < 1
+        assert layout["overflow"] <= 0 and layout["lastRight"] <= layout["frameRight"] + 1
+        screenshot(browser, "curator-table-aligned")
+
+        severity = browser.find_element(By.CSS_SELECTOR, "th[data-sort='severity'] button")
+        severity.click()
+        mildest = min(Severity(t["severity"]).rank for t in _listing(base)["templates"])
+        _wait_for(browser, lambda d: (ranks := [Severity(s).rank for s in _column(d, 3)])
+                  == sorted(ranks) and ranks[0] == mildest, "severity ascending")
+        severity.click()
+        _wait_for(browser, lambda d: _column(d, 3)[0] == "critical", "severity descending")
+        header = browser.find_element(By.CSS_SELECTOR, "th[data-sort='severity']")
+        assert header.get_attribute("aria-sort") == "descending"
+
+        browser.find_element(By.ID, "page-next").click()
+        second = _listing(base, sort="severity", order="desc", offset=20, limit=20)
+        expected = [t["id"] for t in second["templates"]]
+        _wait_for(browser, lambda d: _shown_ids(d) == expected, "second page")
+        assert _text_of(browser, "page-position").startswith("page 2 of")
+        assert browser.find_element(By.ID, "page-previous").is_enabled()
+        screenshot(browser, "curator-table-sorted-page-2")
+
+    def test_search_matches_whole_words_only(
+        self, browser: Any, server: tuple[str, Any]
+    ) -> None:
+        from selenium.webdriver.common.by import By
+
+        base, app = server
+        _sign_in(browser, base, app)
+        everything = _listing(base)["templates"]
+        photographing = {t["id"] for t in everything
+                         if "photograph" in (t["name"] + " " + t["description"]).lower()}
+        assert photographing, "the library should hold a template about photographing"
+
+        browser.find_element(By.ID, "search").send_keys("hot")
+        expected = {t["id"] for t in _listing(base, q="hot")["templates"]}
+        _wait_for(browser, lambda d: set(_shown_ids(d)) == expected, "search results")
+        assert not photographing & expected
+        assert any(name.startswith("Hot liquid") for name in _column(browser, 1))
+        screenshot(browser, "curator-search-hot")
+
+    def test_a_revised_template_shows_a_line_diff_of_its_versions(
+        self, browser: Any, server: tuple[str, Any]
+    ) -> None:
+        from selenium.webdriver.common.by import By
+        from selenium.webdriver.support.ui import Select
+
+        base, app = server
+        secret = _sign_in(browser, base, app)
+        headers = {"Authorization": f"Bearer {secret}"}
+        document = {
+            "id": "breakage.mirror_dropped", "name": "Mirror dropped near a person",
+            "category": "physical", "hazard_class": "glass_breakage",
+            "description": "A mirror let go of shatters next to someone.",
+            "severity": "moderate", "preventability": "preventable",
+            "variables": [{"name": "obj", "type": "object"}],
+            "guards": [{"id": "no_drop_mirror", "action": "DropHandObject",
+                        "formula": "@object != $obj or not fragile($obj)",
+                        "description": "Never drop a fragile object."}],
+        }
+        assert httpx.post(base + "/templates", json=document, headers=headers,
+                          timeout=30).status_code == 201
+        revised = {**document, "guards": [{**document["guards"][0],
+                   "formula": "@object != $obj or not breakable($obj)"}]}
+        assert httpx.put(base + "/templates/breakage.mirror_dropped", json=revised,
+                         headers=headers, timeout=30).status_code == 200
+
+        browser.find_element(By.ID, "search").send_keys("mirror")
+        row = _wait_for(browser, lambda d: d.find_element(
+            By.CSS_SELECTOR, "#template-list tr[data-id='breakage.mirror_dropped']"), "row")
+        row.click()
+        _wait_for(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#diff .diff-added"),
+                  "diff shown")
+        removed, added = ([" ".join(e.text.split()) for e in browser.find_elements(
+            By.CSS_SELECTOR, f"#diff .diff-{kind}")] for kind in ("removed", "added"))
+        assert removed == ['- "formula": "@object != $obj or not fragile($obj)",']
+        assert added == ['+ "formula": "@object != $obj or not breakable($obj)",']
+        assert _text_of(browser, "diff-summary") == "1 line removed, 1 added"
+        screenshot(browser, "curator-version-diff", height=1400)
+
+        Select(browser.find_element(By.ID, "diff-to")).select_by_value("1")
+        _wait_for(browser, lambda d: _text_of(d, "diff-summary") == "the same version",
+                  "same version")
+
+        browser.find_element(By.ID, "detail-edit").click()
+        card = browser.find_element(By.CSS_SELECTOR, "#condition-list .condition")
+        card.find_element(By.CLASS_NAME, "condition-description").send_keys(" Ever.")
+        browser.find_element(By.ID, "save-version").click()
+        _wait_for(browser, lambda d: "version 3" in _text_of(d, "result"), "third version")
+        _wait_for(browser, lambda d: d.find_element(By.ID, "diff-to").get_attribute("value")
+                  == "3", "the diff offers the new version")
+        added = [" ".join(e.text.split())
+                 for e in browser.find_elements(By.CSS_SELECTOR, "#diff .diff-added")]
+        assert added == ['+ "description": "Never drop a fragile object. Ever.",']

@@ -1,7 +1,10 @@
-"""The curator page: plain HTML, CSS and a little vanilla JavaScript served from `app/api/pages/`.
+"""The curator page: plain HTML, CSS and vanilla JavaScript modules served from `app/api/pages/`.
 
-The page is a static shell (no data in it, so it is served without a key); its script calls the
-JSON API with the key the curator types in. Only the three page files are served.
+The page is a static shell (no data in it, so it is served without a key); its scripts call the
+JSON API with the key the curator types in. Only the files listed in `PAGE_FILES` are served:
+the page's own modules and `vendor/editor.js`, the CodeMirror bundle built from `web/` by
+`make web` and committed, so the server needs no Node at run time and works offline.
+Fails: 404 (problem+json) for any other name.
 """
 
 from __future__ import annotations
@@ -14,7 +17,16 @@ from fastapi.responses import FileResponse
 from app.domain.errors import NotFound
 
 PAGES = Path(__file__).resolve().parent.parent / "pages"
-_STATIC = {"curator.js": "text/javascript", "curator.css": "text/css"}
+_SCRIPT = "text/javascript"
+PAGE_FILES = {
+    "curator.css": "text/css",
+    "curator.js": _SCRIPT,
+    "api.js": _SCRIPT,
+    "library.js": _SCRIPT,
+    "versions.js": _SCRIPT,
+    "template_form.js": _SCRIPT,
+    "vendor/editor.js": _SCRIPT,
+}
 
 router = APIRouter(tags=["curator"], include_in_schema=False)
 
@@ -25,10 +37,10 @@ def curator_page() -> FileResponse:
     return FileResponse(PAGES / "curator.html", media_type="text/html")
 
 
-@router.get("/curator/static/{name}")
+@router.get("/curator/static/{name:path}")
 def curator_static(name: str) -> FileResponse:
-    """The page's script and style sheet."""
-    media_type = _STATIC.get(name)
+    """The page's scripts, style sheet and vendored editor bundle."""
+    media_type = PAGE_FILES.get(name)
     if media_type is None:
         raise NotFound(f"no page file {name!r}")
     return FileResponse(PAGES / name, media_type=media_type)

@@ -10,19 +10,23 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Path, status
+from fastapi import APIRouter, Body, Path, Query, status
+from pydantic import BaseModel, Field
 
 from app.api.deps import CuratorKey, ReadAccess, ServicesDep
 from app.api.openapi import problem_responses
 from app.domain.models import Category, HazardTemplate, TemplateStatus
-from app.services import curation
+from app.services import curation, template_listing
 from app.services.curation import Curated
+from app.services.template_listing import SortOrder, TemplateSortKey
 from app.store.records import ApiKeyRecord
 
 router = APIRouter(tags=["templates"])
 # Versions count from 1; past a 64-bit integer the database cannot even compare one (a 500
 # before this bound), so a 422 names the parameter instead.
 MAX_VERSION = 2**31 - 1
+MAX_PAGE = 500
+MAX_OFFSET = 2**31 - 1  # like a version: bounded so a 422 names it, never a silent overflow
 
 _DOCUMENT = Body(  # FastAPI's way to take the raw JSON body, so our validator reports on it
     ...,
@@ -53,22 +57,49 @@ def _template(template: HazardTemplate) -> dict[str, Any]:
     return template.model_dump(mode="json")
 
 
-@router.get("/templates", summary="List and search templates",
-            responses=problem_responses(503))
+class TemplateListResponse(BaseModel):
+    """One page of the library (every match when no `limit` is given)."""
+
+    count: int = Field(description="How many templates this answer holds.")
+    total: int = Field(description="How many templates match, on every page together.")
+    offset: int = Field(description="How many matches were skipped before this page.")
+    limit: int | None = Field(description="The page size asked for; null when not paging.")
+    templates: list[dict[str, Any]] = Field(
+        description="Templates at their current version, as `GET /templates/{template_id}` "
+                    "answers them without `versions`.")
+
+
+@router.get("/templates", summary="List, search, sort and page templates",
+            response_model=TemplateListResponse, responses=problem_responses(503))
 def list_templates(
     services: ServicesDep,
     _: ReadAccess,
     category: Category | None = None,
     hazard_class: str | None = None,
     status: TemplateStatus | None = None,
-    q: str | None = None,
+    q: Annotated[str | None, Query(
+        description="Search words: a template matches when its id, name, hazard class or "
+                    "description holds every word as a whole word (\"hot\" finds "
+                    "`scald_hot_liquid`, not \"Photographing\"); case-insensitive.")] = None,
+    sort: Annotated[TemplateSortKey, Query(
+        description="The column to sort by (severity by how bad, not alphabetically); ties "
+                    "keep id order.")] = TemplateSortKey.ID,
+    order: Annotated[SortOrder, Query(description="Ascending or descending.")] = SortOrder.ASC,
+    offset: Annotated[int, Query(ge=0, le=MAX_OFFSET,
+                                 description="Matches to skip before the page.")] = 0,
+    limit: Annotated[int | None, Query(
+        ge=1, le=MAX_PAGE, description="Page size; without it, every match from `offset` "
+                                       "on.")] = None,
 ) -> dict[str, Any]:
-    """Templates at their current version, filtered by category, class, status and search words."""
+    """Templates at their current version, filtered by category, class, status and search words,
+    sorted by one column, optionally one page at a time (`total` counts every match)."""
     templates = services.repository.list_templates(
         category=category, hazard_class=hazard_class, status=status
     )
-    found = curation.search(templates, q)
-    return {"count": len(found), "templates": [_template(t) for t in found]}
+    found = template_listing.page(templates, text=q, sort=sort, order=order, offset=offset,
+                                  limit=limit)
+    return {"count": len(found.templates), "total": found.total, "offset": offset,
+            "limit": limit, "templates": [_template(t) for t in found.templates]}
 
 
 @router.post("/templates/validate", summary="Validate a template without storing it",
