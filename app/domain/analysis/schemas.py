@@ -99,6 +99,8 @@ _LOCATIVE = frozenset({"on", "in", "inside", "under", "underneath", "by", "next 
                        "off", "near", "behind", "on top of", "at"})
 _BESIDE = frozenset({"next to", "beside", "by", "near", "against", "alongside"})
 _NEXT_TO = _BESIDE - {"against"}
+# "out to the big bin by the gate": the bin is where it goes; the gate only says which bin.
+_TOWARDS = frozenset({"to", "over to", "back to", "up to", "down to", "out to"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
                       "back into"})
 _ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
@@ -142,7 +144,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     places = [i for i, (prep, np) in enumerate(clause.roles)
               if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)]
     if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
-            clause.roles[places[-2]][0] in _SURFACE:
+            clause.roles[places[-2]][0] in _SURFACE | _TOWARDS:
         grounded.beside = g.any(clause.roles[places[-1]][1], place=True)
         places.pop()  # "on the bench next to the iron": the bench, beside the iron
     for position, (prep, np) in enumerate(clause.roles):
