@@ -573,6 +573,22 @@ def _plug(on: bool):  # type: ignore[no-untyped-def]
     return handler
 
 
+def _lock(locked: bool):  # type: ignore[no-untyped-def]
+    action = "LockObject" if locked else "UnlockObject"
+    simple = _simple(action)
+
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        # "lock the scissors in the staff cupboard": put them there, then lock the cupboard
+        place = _destination_id(builder, grounded) if locked else None
+        if place is None:
+            simple(builder, grounded)
+            return
+        _put(builder, grounded)
+        builder.go_to(place)
+        builder.act(action, place)
+    return handler
+
+
 def _wait(builder: PlanBuilder, grounded: Grounded) -> None:
     builder.act("Wait", seconds=60.0)
 
@@ -586,7 +602,7 @@ _HANDLERS = {
     "fetch": _fetch, "give": _give, "put": _put, "discard": _discard, "remove": _remove,
     "throw": _throw, "drop": _drop, "break": _break, "crack": _break,
     "open": _simple("OpenObject"), "close": _simple("CloseObject"),
-    "lock": _simple("LockObject"), "unlock": _simple("UnlockObject"),
+    "lock": _lock(True), "unlock": _lock(False),
     "switch_on": _switch(True), "switch_off": _switch(False), "slice": _slice,
     "clean": _clean, "spray": _spray, "plug": _plug(True), "unplug": _plug(False),
     "push": _push, "pick": _pick, "go": _go, "find": _find, "wait": _wait,
