@@ -27,9 +27,9 @@ from bench.score import load_cases
 CASES_ROOT = Path(__file__).resolve().parent / "cases"
 
 
-def case_files(root: Path = CASES_ROOT) -> list[Path]:
-    """Every case set under `root`, in a stable order."""
-    return sorted(root.rglob("*.jsonl"))
+def case_files(root: Path | None = None) -> list[Path]:
+    """Every case set under `root` (default `bench/cases/`), in a stable order."""
+    return sorted((root or CASES_ROOT).rglob("*.jsonl"))
 
 
 def decision_digest(decisions: dict[str, str]) -> str:
@@ -38,12 +38,14 @@ def decision_digest(decisions: dict[str, str]) -> str:
     return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 
 
-def fingerprint(paths: Sequence[Path], root: Path = CASES_ROOT) -> dict[str, dict[str, object]]:
+def fingerprint(
+    paths: Sequence[Path], root: Path | None = None
+) -> dict[str, dict[str, object]]:
     """Run SafeGate on each file and hash its decisions.
 
     Args:
-        paths: case files.
-        root: the directory set names are given relative to.
+        paths: case files under `root`.
+        root: the directory set names are given relative to (default `bench/cases/`).
 
     Returns:
         For each set (its path relative to `root`), the number of cases and the digest.
@@ -53,7 +55,7 @@ def fingerprint(paths: Sequence[Path], root: Path = CASES_ROOT) -> dict[str, dic
     with SafeGateMethod().open() as decide:
         for path in paths:
             decisions = {case.id: decide(case.request).decision for case in load_cases(path)}
-            name = str(path.resolve().relative_to(root.resolve()))
+            name = str(path.resolve().relative_to((root or CASES_ROOT).resolve()))
             prints[name] = {"cases": len(decisions), "sha256": decision_digest(decisions)}
             print(f"{name:<36} {len(decisions):>4} {prints[name]['sha256']}", flush=True)
     return prints
