@@ -25,39 +25,17 @@ from monitor_kit import (
     PICK_KNIFE,
     after,
     before,
-    store_knife_contract,
 )
+from replica_kit import BLADE_NEAR_PERSON, QUIET, knife_contract_in, open_session
 from websockets.sync.client import ClientConnection, connect
 
 from app.client import MonitorClient, MonitorHalted
-from app.store.db import create_engine_for, migrate
-from app.store.repository import Repository
 
 pytestmark = [pytest.mark.faults, pytest.mark.slow, pytest.mark.postgres]
-
-BLADE_NEAR_PERSON = "sharp.blade_carried_near_person.slow_with_blade_near_people"
-QUIET = {"SAFEGATE_LOG_LEVEL": "warning", "SAFEGATE_GATE_WORKERS": "1"}
-
-
-def knife_contract_in(url: str) -> str:
-    engine = create_engine_for(url)
-    try:
-        migrate(engine)
-        return store_knife_contract(Repository(engine))
-    finally:
-        engine.dispose()
 
 
 def two_replicas(live_server: Callable[..., Any], url: str) -> tuple[Any, Any]:
     return live_server(url, **QUIET), live_server(url, **QUIET)
-
-
-def open_session(server: Any, contract_id: str) -> str:
-    response = httpx.post(f"{server.base_url}/monitor", json={"contract_id": contract_id},
-                          timeout=10)
-    assert response.status_code == 201, response.text
-    session_id: str = response.json()["session_id"]
-    return session_id
 
 
 def exchange(socket: ClientConnection, message: dict[str, Any]) -> dict[str, Any]:
