@@ -10,8 +10,11 @@ for the run and dropped after it. Without a reachable server the benchmark says 
    halts: a session opened on A, a watcher on B's `/monitor/{id}/events`, a runtime on A sending
    one `before` that breaks a guard; the clock runs from the send to the watcher's event (and, for
    comparison, to the runtime's own answer). Target (issue 18): p99 <= 100 ms.
-2. Throughput: `POST /gate` from 8 keep-alive clients for 5 s each (`gate_http.py`'s load), to
-   one server started with `--workers 1` and then `--workers 2`, same database, same run.
+2. Throughput: `POST /gate` from 8 keep-alive clients for 5 s each (`gate_http.py`'s load, after
+   as long a warm-up), to one server started with `--workers 1` and then `--workers 2`, same
+   database, same run; once with each worker's analysis pool at its default size (one process
+   per core: one worker already spreads Stages 1-5 over every core) and once with one analysis
+   process per worker (so the second worker adds a core's worth of analysis).
 """
 
 from __future__ import annotations
@@ -136,10 +139,13 @@ async def fan_out(a: str, b: str, contract_id: str) -> tuple[list[float], list[f
     return answers, events
 
 
-def throughput(url: str, workers: int) -> tuple[float, int]:
+def throughput(url: str, workers: int, pool: int) -> tuple[float, int]:
+    """Gate requests/s (and errors) from `workers` uvicorn workers with `pool` analysis
+    processes each (0: one per core, the default)."""
     # Niceness 0: on a machine shared with other work, analysis workers at the default 19 get
     # what the others leave, and the comparison would measure the others.
-    env = {"SAFEGATE_DATABASE_URL": url, "SAFEGATE_GATE_WORKER_NICE": "0", **QUIET}
+    env = {"SAFEGATE_DATABASE_URL": url, "SAFEGATE_GATE_WORKER_NICE": "0",
+           "SAFEGATE_GATE_WORKERS": str(pool), **QUIET}
     with running_server(env, workers=workers) as base:
         bodies = requests(base)
         asyncio.run(concurrent(base, bodies))  # warm every worker and its analysis pool
@@ -160,8 +166,8 @@ def main() -> None:
         env = {"SAFEGATE_DATABASE_URL": url, "SAFEGATE_GATE_WORKERS": "1", **QUIET}
         with running_server(env) as a, running_server(env) as b:
             answers, events = asyncio.run(fan_out(a, b, contract_id))
-        one, one_errors = throughput(url, 1)
-        two, two_errors = throughput(url, 2)
+        rates = {(workers, pool): throughput(url, workers, pool)
+                 for pool in (0, 1) for workers in (1, 2)}
     finally:
         drop_database(admin_url, url)
 
@@ -175,10 +181,12 @@ def main() -> None:
                   f"{statistics.median(events):.1f} ms", f"{percentile(events, 0.99):.1f} ms",
                   f"{max(events):.1f} ms", "p99 <= 100 ms")
     load = f"{CONCURRENT_CLIENTS} clients, {CONCURRENT_SECONDS:.0f} s"
-    table.add_row(f"POST /gate, --workers 1 ({load})", f"{one:.0f} req/s", "", "",
-                  f"errors: {one_errors}")
-    table.add_row(f"POST /gate, --workers 2 ({load})", f"{two:.0f} req/s", "", "",
-                  f"errors: {two_errors}; x{two / one:.2f}")
+    for pool, pool_name in ((0, "analysis pool: one per core"), (1, "analysis pool: 1")):
+        for workers in (1, 2):
+            rate, errors = rates[(workers, pool)]
+            ratio = rate / max(rates[(1, pool)][0], 1e-9)
+            table.add_row(f"POST /gate, --workers {workers}, {pool_name} ({load})",
+                          f"{rate:.0f} req/s", "", "", f"errors: {errors}; x{ratio:.2f}")
     Console().print(table)
 
 
