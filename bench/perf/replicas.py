@@ -180,6 +180,10 @@ def main() -> None:
     table.add_row(f"halt on A -> watcher on B ({HALTS} halts)",
                   f"{statistics.median(events):.1f} ms", f"{percentile(events, 0.99):.1f} ms",
                   f"{max(events):.1f} ms", "p99 <= 100 ms")
+    lag = [event - answer for answer, event in zip(answers, events, strict=True)]
+    table.add_row("the fan-out alone: watcher on B minus answer on A",
+                  f"{statistics.median(lag):.1f} ms", f"{percentile(lag, 0.99):.1f} ms",
+                  f"{max(lag):.1f} ms", "")
     load = f"{CONCURRENT_CLIENTS} clients, {CONCURRENT_SECONDS:.0f} s"
     for pool, pool_name in ((0, "analysis pool: one per core"), (1, "analysis pool: 1")):
         for workers in (1, 2):
