@@ -67,7 +67,8 @@ bench-sealed: $(STAMP)
 
 ## Performance benchmarks: each prints a table. (`_*.py` are their helpers;
 ## analysis_stability.py is a record/check tool for speed work, and monitor_ab.py compares
-## two checkouts; both are run by hand.)
+## two checkouts; both are run by hand. replicas.py needs a PostgreSQL server,
+## SAFEGATE_BENCH_POSTGRES_URL, default the test server's, and says so when there is none.)
 PERF_BENCHMARKS := $(filter-out bench/perf/analysis_stability.py bench/perf/monitor_ab.py,$(wildcard bench/perf/[!_]*.py))
 perf: $(STAMP)
 	@for f in $(PERF_BENCHMARKS); do echo "== $$f"; $(BIN)/python $$f || exit 1; done

@@ -76,9 +76,11 @@ def serve(
 
     from app.api.logs import configure_logging
     from app.config import Settings
+    from app.metrics import clear_multiprocess_directory
 
     log_level = Settings().log_level
     configure_logging(log_level)
+    clear_multiprocess_directory()  # PROMETHEUS_MULTIPROC_DIR: before any worker writes to it
     uvicorn.run(
         "app.main:create_app",
         factory=True,
