@@ -27,7 +27,8 @@ POSSESSIVES = {"my": "me", "his": "him", "her": "her", "their": "them", "our": "
 _TRAILING = frozenset({"downstairs", "upstairs", "here", "there", "now", "too", "again",
                        "everywhere", "anyway", "outside", "inside", "please", "today",
                        "tonight", "first", "properly", "quickly", "later", "instead",
-                       "quiet", "quietly", "silently", "softly", "slowly", "gently"})
+                       "quiet", "quietly", "silently", "softly", "slowly", "gently",
+                       "straight", "directly"})
 _PARTS = frozenset({"end", "side", "edge", "middle", "corner", "back", "front", "bottom", "rest",
                     "top", "half", "centre", "center", "inside", "outside", "surface", "remainder"})
 # "a glass of water": the container holds the substance; "a slice of cake": the part is food.

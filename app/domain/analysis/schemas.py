@@ -51,6 +51,8 @@ class Grounded:
     instrument: Referent | None = None
     beside: Referent | None = None
     """What the thing is set down next to ("on the bench next to the soldering iron")."""
+    into_hands: bool = False
+    """The command put the thing into the recipient's hands: a handover, never a set-down."""
     destination_word: str | None = None
     """The preposition that named the destination ("by" the door, "against" it)."""
     problem: str | None = None
@@ -99,6 +101,8 @@ _LOCATIVE = frozenset({"on", "in", "inside", "under", "underneath", "by", "next 
                        "off", "near", "behind", "on top of", "at"})
 _BESIDE = frozenset({"next to", "beside", "by", "near", "against", "alongside"})
 _NEXT_TO = _BESIDE - {"against"}
+_INTO_HANDS = frozenset({"in", "into", "onto", "to"})
+_HANDS = frozenset({"hand", "hands", "grip", "grasp"})
 # "out to the big bin by the gate": the bin is where it goes; the gate only says which bin.
 _TOWARDS = frozenset({"to", "over to", "back to", "up to", "down to", "out to"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
@@ -160,6 +164,13 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         if prep in ("out of", "beyond") and np.head == "reach" and grounded.destination is None:
             # "out of his reach": somewhere high, which is where things go to be kept from people
             grounded.destination = g.any(_OUT_OF_REACH, place=True)
+            continue
+        if prep in _INTO_HANDS and np.head in _HANDS and np.possessor and recipient is None:
+            # "put it straight into his hands": a handover to him, not a place called hands
+            grounded.recipient = recipient = g.person(NounPhrase(
+                np.possessor, head=np.possessor, pronoun=np.possessor if np.possessor in (
+                    "me", "him", "her", "them", "us") else None))
+            grounded.into_hands = True
             continue
         if prep in _SOURCE and grounded.source is None:
             grounded.source = g.any(np, place=True)
@@ -275,6 +286,8 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
     if schema is None or grounded.clause.negated:
         return
     handler = _HANDLERS.get(schema) or RECIPES.get(schema)
+    if grounded.into_hands and schema in ("put", "fetch", "give", "pick"):
+        handler = _give  # "straight into his hands": handed over, not set down beside him
     before = len(builder.sketch.literal)
     if handler is not None:
         handler(builder, grounded)

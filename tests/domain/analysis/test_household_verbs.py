@@ -66,3 +66,19 @@ def _with_lockable_cabinet() -> dict[str, Any]:
             obj["properties"] = {"lockable": True}
     scene["objects"] = [o for o in scene["objects"] if o["id"] != "cabinet_2"]
     return scene
+
+
+class TestIntoTheirHands:
+    def test_into_his_hands_is_a_handover_to_him(self) -> None:
+        scene = copy.deepcopy(HOME)
+        scene["people"].append({"id": "grandpa", "role": "grandpa", "room": "living_room",
+                                "posture": "lying"})
+        actions = _actions("Take the mug and put it straight into grandpa's hands", scene)
+        assert ("HandOver", "mug_1") in actions
+
+    def test_hot_tea_into_an_older_mans_hands_is_refused(
+            self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        scene = copy.deepcopy(HOME)
+        scene["people"].append({"id": "grandpa", "role": "grandpa", "room": "living_room"})
+        decided = gate(request("put the mug straight into grandpa's hands", scene))
+        assert decided.decision is not Decision.AUTHORIZE, decided.reason
