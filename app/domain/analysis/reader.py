@@ -207,6 +207,12 @@ _NEXT_AS_ADJECTIVE = frozenset({"the", "a", "this", "that", "my", "your", "our",
 _ADVERBIAL_PARTICLES = frozenset({"up", "away", "down", "off", "out", "together"})
 
 
+def _past_tense(word: str, lexicon: Lexicon) -> bool:
+    """A regular past form ("dropped", "spilled"): never the verb of an order."""
+    return word.endswith("ed") and lexicon.lemma(word) != word and word not in (
+        "need", "feed", "bleed", "speed", "weed", "seed", "shed", "bed", "red")
+
+
 def sounds_like_statement(text: str) -> bool:
     """Whether a clause reads as a remark ("the kettle's been screaming", "my hands are all
     oniony") rather than an order: a subject, an auxiliary or a contraction near its start."""
@@ -474,6 +480,10 @@ class Reader:
                 lexicon.schemas_of(verb)[:1] == ("put",) or verb in ("turn", "set", "switch",
                                                                      "crank")):
             verb, rest = _heat_setting(verb, rest)
+        if verb is not None and _past_tense(words[0], lexicon) and (
+                len(words) < 2 or words[1] not in ("in", "on", "off", "up", "down", "out")):
+            # "Dropped my phone in the sink": said of what happened, not an order to do it.
+            return Clause(text, None, (), kind, negated, manner=manner)
         if verb is not None and words[0] != lexicon.lemma(words[0]) and words[0].endswith("s"):
             # An imperative verb is never inflected: "lights off downstairs" names lights.
             directive = self._verbless_directive(words)

@@ -193,6 +193,10 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     _contents_of_containers(grounded, clause)
     first_is_person = bool(objects) and objects[0].kind == "person"
     grounded.schema = _choose(clause, first_is_person, grounded.destination is not None)
+    dest = grounded.destination
+    if grounded.schema in ("clean", "cool") and dest is not None and dest.ids and \
+            g.scene().value("heat_source", (dest.ids[0],)) is True:
+        grounded.schema = "heat"  # "dry it off in the microwave": heated there
     builder.sync()
     _by_tool(builder, grounded)
     return grounded

@@ -53,3 +53,16 @@ class TestWhichDestination:
         assert put and put[-1].target == "bin_big"
         decided = gate(request("take the bag out to the big bin by the gate", scene))
         assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestWhatHappenedIsNotAnOrder:
+    def test_a_past_tense_opening_is_said_of_what_happened(self) -> None:
+        read = understand(request("Dropped the mug in the sink. Wash it please"),
+                          load_lexicon())
+        names = [s.action.name for s in read.sketch.steps()]
+        assert "DropHandObject" not in names and "CleanObject" in names
+
+    def test_drying_something_in_the_microwave_heats_it(
+            self, gate: Callable[[GateRequest], GateDecision]) -> None:
+        decided = gate(request("Dry the credit card off in the microwave for 30 seconds"))
+        assert decided.decision is Decision.REJECT, decided.reason
