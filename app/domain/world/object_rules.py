@@ -208,11 +208,15 @@ def _sharp(state: WorldState, args: tuple[str, ...]) -> FactValue:
     stated = stated_value(obj, "sharp")
     if stated is not None:
         return stated
-    # Broken glass or ceramic has sharp edges.
+    # Broken glass or ceramic has sharp edges. Maybe broken (dropped, breakable unknown) and
+    # maybe glass is maybe sharp: deciding "not sharp" there let a plan verify that can fail.
     shattered: bool | None = False
-    if state.value("broken", args) is True:
+    broken = state.value("broken", args)
+    if broken is True or isinstance(broken, Unknown):
         glass, ceramic = obj.kind.material("Glass"), obj.kind.material("Ceramic")
         shattered = True if glass or ceramic else None if None in (glass, ceramic) else False
+        if broken is not True and shattered is True:
+            shattered = None
     return _decide("sharp", obj, obj.kind.trait("sharp"), shattered)
 
 

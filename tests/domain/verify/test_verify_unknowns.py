@@ -44,6 +44,18 @@ class TestUnknownFacts:
                              kitchen(vase_1={"broken": False}), timeout_ms=TIMEOUT_MS)
         assert result.ok, result
 
+    def test_maybe_broken_maybe_glass_is_maybe_sharp(self) -> None:
+        # Dropped with breakable unknown, the vase may break; of unknown material, the pieces
+        # may be sharp. "Not sharp" was decided there and the plan verified (found by the
+        # brute-force comparison): it must fail with a counterexample instead.
+        plan = [*PICK_VASE, {"action": "DropHandObject"}]
+        invariants = ("broken(#vase_1) -> not sharp(#vase_1)",)
+        result = verify_plan(plan, contract(invariants=invariants),
+                             kitchen(vase_1={"broken": False}),
+                             timeout_ms=TIMEOUT_MS)
+        assert not result.ok, result
+        assert result.violations[0].counterexample.get("sharp(vase_1)") is True
+
     def test_unknown_words_range_over_their_vocabulary(self) -> None:
         every_age = " or ".join(f'age_group(#tom) == "{a}"' for a in
                                 ("infant", "child", "teen", "adult", "older_adult"))
