@@ -12,7 +12,7 @@ import httpx
 import pytest
 from monitor_kit import GO_TO_MUG, PICK_MUG, REQUEST, TOGGLE_STOVE, store_contract
 
-from app.client import (
+from safegate_client import (
     ApiError,
     AsyncGateClient,
     GateClient,
@@ -21,7 +21,8 @@ from app.client import (
     RetryPolicy,
     SafeGateUnavailable,
 )
-from app.domain.models import GateRequest
+from safegate_client.models import GateRequest, GateResponse, VerifyResponse
+
 from app.store.repository import Repository
 
 FAST = RetryPolicy(attempts=3, backoff=0.01, max_wait=0.05)
@@ -45,12 +46,14 @@ def counting(answers: list[httpx.Response | Exception]) -> tuple[httpx.MockTrans
 
 class TestRetries:
     def test_a_busy_gate_is_asked_again_and_its_answer_used(self) -> None:
-        decision = {"decision": "reject", "rule": "R1"}
+        decision = {"request_id": "r1", "decision": "reject", "rule": "R1", "defer_kind": None,
+                    "question": None, "reason": "a child", "hazards": [], "unknowns": [],
+                    "triggers": [], "contract_id": None, "analyzer": "symbolic"}
         transport, calls = counting([
             httpx.Response(503, json=BUSY, headers={"Retry-After": "0"}),
             httpx.Response(200, json=decision)])
         with GateClient("http://safegate.test", retry=FAST, transport=transport) as gate:
-            assert gate.gate({"command": "x"}) == decision
+            assert gate.gate({"command": "x"}) == GateResponse.model_validate(decision)
         assert calls[0] == 2
 
     def test_a_gate_busy_through_every_retry_raises_and_never_decides(self) -> None:
@@ -95,15 +98,15 @@ class TestAsyncGateClient:
         server = live_server()
         contract_id = store_contract(server_repository)
 
-        async def run() -> tuple[dict[str, Any], dict[str, Any], str]:
+        async def run() -> tuple[GateResponse, VerifyResponse, str]:
             async with AsyncGateClient(server.base_url) as gate:
                 decision = await gate.gate(GateRequest.model_validate(REQUEST))
                 verdict = await gate.verify(contract_id, [GO_TO_MUG, PICK_MUG])
                 return decision, verdict, await gate.open_monitor(contract_id)
 
         decision, verdict, session_id = asyncio.run(run())
-        assert decision["decision"] in {"authorize", "defer", "reject"}
-        assert verdict["ok"] is True
+        assert decision.decision in {"authorize", "defer", "reject"}
+        assert verdict.ok is True
         assert session_id
 
     def test_the_async_client_raises_for_an_error_status(
@@ -133,7 +136,7 @@ class TestMonitorReconnect:
             monitor.step(PICK_MUG, lambda: {"robot": {"holding": "mug_1"}})
         with GateClient(server.base_url) as gate:
             summary = gate.monitor_summary(session_id)
-        assert (summary["last_seq"], summary["pending_seq"], summary["errors"]) == (2, None, 0)
+        assert (summary.last_seq, summary.pending_seq, summary.errors) == (2, None, 0)
 
     def test_an_after_the_monitor_already_holds_counts_as_accepted(
             self, live_server: Callable[..., Any], server_repository: Repository) -> None:
@@ -166,7 +169,7 @@ class TestMonitorReconnect:
             assert monitor.before(GO_TO_MUG) == 3
         with GateClient(server.base_url) as gate:
             summary = gate.monitor_summary(session_id)
-        assert (summary["last_seq"], summary["pending_seq"]) == (2, 3)
+        assert (summary.last_seq, summary.pending_seq) == (2, 3)
 
     def test_a_halt_is_never_resumed_past(
             self, live_server: Callable[..., Any], server_repository: Repository) -> None:
