@@ -21,6 +21,8 @@ import json
 import subprocess
 import sys
 import tempfile
+import tomllib
+from importlib.metadata import version
 from pathlib import Path
 from typing import Any
 
@@ -75,7 +77,7 @@ def _tidy(node: Any, *, in_properties: bool = False) -> Any:
         if key == "$ref" and isinstance(value, str) and value.startswith(_REF):
             name = value[len(_REF):]
             value = _REF + RENAMES.get(name, name)
-        tidied[RENAMES.get(key, key)] = _tidy(value, in_properties=key == "properties"
+        tidied[RENAMES.get(str(key), str(key))] = _tidy(value, in_properties=key == "properties"
                                               and not in_properties)
     return tidied
 
@@ -103,8 +105,24 @@ def monitor_document(asyncapi: dict[str, Any]) -> dict[str, Any]:
             "paths": {}, "components": {"schemas": schemas}}
 
 
+def pinned_generator() -> str:
+    """The generator version the `codegen` extra pins (its output differs between versions)."""
+    project = tomllib.loads((HERE / "pyproject.toml").read_text())["project"]
+    requirement: str = project["optional-dependencies"]["codegen"][0]
+    return requirement.split("==", 1)[1]
+
+
 def render(document: dict[str, Any], source: str) -> str:
-    """The models of a document's component schemas, as Python source."""
+    """The models of a document's component schemas, as Python source.
+
+    Raises:
+        RuntimeError: the installed generator is not the pinned one (install the `codegen`
+            extra: `pip install -e './clients/python[codegen]'`).
+    """
+    installed, pinned = version("datamodel-code-generator"), pinned_generator()
+    if installed != pinned:
+        raise RuntimeError(f"datamodel-code-generator {installed} is installed, the models are "
+                           f"made with {pinned}: pip install -e './clients/python[codegen]'")
     with tempfile.TemporaryDirectory() as directory:
         given = Path(directory) / "document.json"
         given.write_text(json.dumps(_tidy(copy.deepcopy(document)), indent=1, sort_keys=True))

@@ -11,7 +11,6 @@ from typing import Any
 import httpx
 import pytest
 from monitor_kit import GO_TO_MUG, PICK_MUG, REQUEST, TOGGLE_STOVE, store_contract
-
 from safegate_client import (
     ApiError,
     AsyncGateClient,

@@ -21,7 +21,6 @@ from monitor_kit import (
     before,
     store_contract,
 )
-
 from safegate_client import (
     ApiError,
     GateClient,

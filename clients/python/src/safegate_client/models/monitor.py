@@ -87,7 +87,7 @@ class Violation(BaseModel):
     phase: Literal['before', 'after', 'sync']
     quote: str | None = None
     """
-    For a scope violation
+    For a scope violation, the words of the command the action departs from.
     """
     seq: Annotated[int, Field(ge=0)]
     timestamp: AwareDatetime
