@@ -221,3 +221,13 @@ class TestRestart:
             assert json.loads(socket.recv(timeout=10)) == {"type": "allow", "seq": 2}
             socket.send(json.dumps(before(3, TOGGLE_STOVE)))
             assert json.loads(socket.recv(timeout=10))["type"] == "violation"
+
+
+class TestOldImports:
+    def test_app_client_re_exports_the_sdk(self) -> None:
+        import safegate_client
+
+        import app.client
+
+        for name in app.client.__all__:
+            assert getattr(app.client, name) is getattr(safegate_client, name), name
