@@ -5,7 +5,8 @@ monitor client reconnecting and resuming with the resync protocol (real server o
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import httpx
@@ -19,8 +20,10 @@ from safegate_client import (
     MonitorHalted,
     RetryPolicy,
     SafeGateUnavailable,
+    UnexpectedAnswer,
 )
 from safegate_client.models import GateRequest, GateResponse, VerifyResponse
+from websockets.sync.server import Server, ServerConnection, serve
 
 from app.store.repository import Repository
 
@@ -183,3 +186,29 @@ class TestMonitorReconnect:
             monitor._socket.close()
             with pytest.raises(MonitorHalted):
                 monitor.before(GO_TO_MUG)
+
+
+@pytest.fixture
+def garbling_monitor() -> Iterator[str]:
+    """A websocket server on loopback answering every message with something that is none of
+    the protocol's answers (`"allowed"` is not `"allow"`); yields its base URL."""
+    def answer(connection: ServerConnection) -> None:
+        for _ in connection:
+            connection.send('{"type": "allowed", "seq": 1}')
+
+    server: Server = serve(answer, "127.0.0.1", 0)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    yield f"http://127.0.0.1:{server.socket.getsockname()[1]}"
+    server.shutdown()
+    thread.join(timeout=10)
+
+
+class TestUnreadableMonitorAnswers:
+    def test_an_answer_of_no_known_type_never_lets_the_action_run(
+            self, garbling_monitor: str) -> None:
+        ran: list[str] = []
+        with MonitorClient(garbling_monitor, "s1") as monitor, \
+                pytest.raises(UnexpectedAnswer, match="none of the protocol's"):
+            monitor.step(GO_TO_MUG, lambda: ran.append("moved"))
+        assert ran == []
