@@ -10,8 +10,6 @@ ENV PATH=/opt/venv/bin:$PATH
 WORKDIR /srv
 COPY pyproject.toml README.md ./
 COPY app ./app
-COPY bench ./bench
-COPY sim ./sim
 # Editable, so that the package finds migrations/ and templates_db/ beside it in /srv (the
 # runtime stage keeps the same paths); the dependencies land in /opt/venv.
 RUN pip install -e .
@@ -23,8 +21,6 @@ RUN groupadd --system --gid 10001 safegate \
 COPY --from=build /opt/venv /opt/venv
 WORKDIR /srv
 COPY --from=build /srv/app ./app
-COPY --from=build /srv/bench ./bench
-COPY --from=build /srv/sim ./sim
 COPY alembic.ini ./
 COPY migrations ./migrations
 COPY templates_db ./templates_db

@@ -56,27 +56,29 @@ client-models: $(STAMP)
 
 ## The paper's evaluation: every method on the benchmark; report, JSON and plots from scratch
 ## in bench/reports/benchmark/ (embedded analyzer, no network; the LLM classifier runs only
-## when SAFEGATE_LLM_MODEL is set).
+## when SAFEGATE_LLM_MODEL is set). `python -m bench` runs from this checkout, not from the wheel;
+## its scipy and matplotlib come with the `bench` extra, which `.[dev]` includes.
 bench: $(STAMP)
-	$(BIN)/safegate bench run bench/cases/benchmark.jsonl --name benchmark
-	$(BIN)/safegate bench run bench/cases/fresh/fresh.jsonl --name fresh
-	$(BIN)/safegate bench run bench/cases/second/second.jsonl --name second
-	$(BIN)/safegate bench run bench/cases/third/third.jsonl --name third
-	$(BIN)/safegate bench run bench/cases/fourth/fourth.jsonl --name fourth
-	$(BIN)/safegate bench run bench/cases/devmix/devmix.jsonl --name devmix
+	$(BIN)/python -m bench run bench/cases/benchmark.jsonl --name benchmark
+	$(BIN)/python -m bench run bench/cases/fresh/fresh.jsonl --name fresh
+	$(BIN)/python -m bench run bench/cases/second/second.jsonl --name second
+	$(BIN)/python -m bench run bench/cases/third/third.jsonl --name third
+	$(BIN)/python -m bench run bench/cases/fourth/fourth.jsonl --name fourth
+	$(BIN)/python -m bench run bench/cases/devmix/devmix.jsonl --name devmix
 
 ## The sealed sets (bench/cases/sealed/README.md): SafeGate only, and only the summary line is
 ## printed, so nobody reads a sealed miss by running it.
 bench-sealed: $(STAMP)
 	@for s in sealed/thor sealed/chores sealed/people sealed/oblique sealed2/chores2 sealed2/everyday2 sealed3/home3 sealed3/care3 sealed4/kitchen4 sealed4/rounds4 sealed5/shared5 sealed5/visits5 sealed6/errands6 sealed6/people6; do \
-	  n=$${s#*/}; $(BIN)/safegate bench run bench/cases/$$s/$$n.jsonl --method safegate --name $$n \
+	  n=$${s#*/}; $(BIN)/python -m bench run bench/cases/$$s/$$n.jsonl --method safegate --name $$n \
 	    --out bench/reports/sealed-current >/dev/null 2>&1 || exit 1; \
 	  printf '%-10s ' $$n; grep -m1 '^| `safegate` | [0-9]' bench/reports/sealed-current/$$n/report.md; \
 	done
 
 ## Performance benchmarks: each prints a table. (`_*.py` are their helpers;
 ## analysis_stability.py is a record/check tool for speed work, and monitor_ab.py compares
-## two checkouts; both are run by hand.)
+## two checkouts; both are run by hand. replicas.py needs a PostgreSQL server,
+## SAFEGATE_BENCH_POSTGRES_URL, default the test server's, and says so when there is none.)
 PERF_BENCHMARKS := $(filter-out bench/perf/analysis_stability.py bench/perf/monitor_ab.py,$(wildcard bench/perf/[!_]*.py))
 perf: $(STAMP)
 	@for f in $(PERF_BENCHMARKS); do echo "== $$f"; $(BIN)/python $$f || exit 1; done

@@ -1,5 +1,5 @@
 """The `safegate` command line: serve the API, migrate its database, try the gate, manage keys
-and the template library, score and evaluate benchmarks.
+and the template library. (The evaluation is `python -m bench`, outside the service package.)
 
 In: arguments and `SAFEGATE_*` environment variables. Out: a running server, or Rich tables on
 stdout (`app/commands/` holds the key, template and gate commands).
@@ -9,7 +9,6 @@ Fails: a non-zero exit code with a one-line reason on stderr.
 from __future__ import annotations
 
 from importlib.metadata import PackageNotFoundError, version
-from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -20,8 +19,6 @@ from app.commands.templates import templates_cli
 
 cli = typer.Typer(help="SafeGate: a pre-execution safety gate for LLM-controlled robots.",
                   no_args_is_help=True)
-bench_cli = typer.Typer(help="Evaluate SafeGate on benchmark files.", no_args_is_help=True)
-cli.add_typer(bench_cli, name="bench")
 cli.add_typer(keys_cli, name="keys")
 cli.add_typer(templates_cli, name="templates")
 cli.command("gate")(gate_command)
@@ -79,9 +76,11 @@ def serve(
 
     from app.api.logs import configure_logging
     from app.config import Settings
+    from app.metrics import clear_multiprocess_directory
 
     log_level = Settings().log_level
     configure_logging(log_level)
+    clear_multiprocess_directory()  # PROMETHEUS_MULTIPROC_DIR: before any worker writes to it
     uvicorn.run(
         "app.main:create_app",
         factory=True,
@@ -95,52 +94,13 @@ def serve(
     )
 
 
-@bench_cli.command("score")
-def bench_score(
-    files: Annotated[list[Path], typer.Argument(help="Benchmark JSONL files.", exists=True)],
-) -> None:
-    """Run every case through the gate (embedded analyzer) and print the paper's metrics."""
-    from rich.console import Console
-
-    from bench.gate_runner import embedded_decider
-    from bench.score import render_report, score_files
-
-    with embedded_decider() as decide:
-        report = score_files(list(files), decide)
-    Console().print(render_report(report))
-
-
-@bench_cli.command("run")
-def bench_run(
-    files: Annotated[list[Path], typer.Argument(help="Benchmark JSONL files.", exists=True)],
-    method: Annotated[
-        list[str] | None,
-        typer.Option(help="safegate | llm-classifier | selp-style | roboguard-style "
-                          "(repeatable; default: all)."),
-    ] = None,
-    name: Annotated[str | None, typer.Option(help="Run name (default: first file's stem).")]
-    = None,
-    out: Annotated[Path, typer.Option(help="Reports root.")] = Path("bench/reports"),
-    analyzer: Annotated[str, typer.Option(help="SafeGate's analyzer setting.")] = "symbolic",
-) -> None:
-    """Run the methods on the files and write report.md, results.json and plots."""
-    from rich.console import Console
-
-    from bench.case import BenchmarkError
-    from bench.methods import METHOD_NAMES
-    from bench.report_md import summary_table
-    from bench.run import run_all, write_run
-
-    try:
-        evaluation = run_all(list(files), method or list(METHOD_NAMES), safegate_analyzer=analyzer)
-    except BenchmarkError as exc:
-        typer.echo(f"error: {exc}", err=True)
-        raise typer.Exit(code=2) from exc
-    directory = out / (name or files[0].stem)
-    written = write_run(evaluation, directory, [str(f) for f in files])
-    console = Console()
-    typer.echo("\n".join(summary_table(evaluation)))
-    console.print(f"Wrote {', '.join(str(p) for p in written)}")
+@cli.command(hidden=True, context_settings={"allow_extra_args": True,
+                                           "ignore_unknown_options": True})
+def bench() -> None:
+    """Moved: the evaluation is `python -m bench` in a source checkout, outside the service."""
+    typer.echo("`safegate bench` moved out of the service: run `python -m bench run|score ...` "
+               "from a SafeGate source checkout (pip install -e '.[bench]').", err=True)
+    raise typer.Exit(code=2)
 
 
 def main() -> None:

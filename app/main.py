@@ -3,8 +3,9 @@ and the routes. Nothing is built at import time; everything lives in the lifespa
 
 Start-up: connect, migrate (`alembic upgrade head`), seed the template library idempotently, load
 the active templates into memory, build the analyzer, start the analysis pool's workers (Stages
-1-5 run there, off the event loop) and the watch that closes websockets of revoked keys. A
-failure there stops the start-up (it never serves with a half-built gate).
+1-5 run there, off the event loop), the monitoring service (on PostgreSQL with the LISTEN/NOTIFY
+fan-out that carries halts to the other replicas' listeners) and the watch that closes websockets
+of revoked keys. A failure there stops the start-up (it never serves with a half-built gate).
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ from app.config import Settings
 from app.metrics import Metrics
 from app.services import Services, build_services
 from app.services.analysis_pool import AnalysisPool
+from app.services.monitoring_fanout import monitoring_for
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -52,15 +54,18 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         services: Services = build_services(resolved, metrics=metrics)
         app.state.services = services
-        pool = AnalysisPool(resolved, services.templates)
+        pool = AnalysisPool(resolved, services.templates, services.metrics)
         try:
             await pool.start()
             app.state.analysis_pool = pool
-            async with revocations.watching(app, services):
+            async with (monitoring_for(services) as (app.state.monitoring,
+                                                    app.state.monitor_fanout),
+                        revocations.watching(app, services)):
                 yield
         finally:
             await anyio.to_thread.run_sync(pool.close)
             services.close()
+            metrics.process_exiting()
 
     app = FastAPI(
         title="SafeGate",

@@ -3,10 +3,11 @@
 In: a method name from the command line. Out: a `Method` (see `bench/method.py`).
 - `safegate`: every case is POSTed to /gate of an embedded app, exactly as a caller does.
 - `llm-classifier`: the paper's one-prompt, three-way LLM judgement, `LlmClassifier` of
-  `app/adapters/llm/classifier.py` (built on a `LitellmClient` from the `SAFEGATE_*` settings;
-  its `classify(request)` answers decision, reason and whether the call failed). It runs only
-  when `SAFEGATE_LLM_MODEL` is set. A failed LLM call is the adapter's fail-closed `defer`; the
-  verdict's reason starts with "LLM call failed" so such cases can be counted.
+  `bench/baselines/llm_classifier.py` (built on SafeGate's `LitellmClient` from the `SAFEGATE_*`
+  settings; its `classify(request)` answers decision, reason and whether the call failed). It
+  runs only when `SAFEGATE_LLM_MODEL` is set and litellm (the `llm` extra) is installed. A
+  failed LLM call is the classifier's fail-closed `defer`; the verdict's reason starts with
+  "LLM call failed" so such cases can be counted.
 - `selp-style`, `roboguard-style`: our re-implementations of the published baselines
   (`bench/baselines/`).
 Fails: `BenchmarkError` on an unknown method name. A method that cannot run reports why through
@@ -15,11 +16,11 @@ Fails: `BenchmarkError` on an unknown method name. A method that cannot run repo
 
 from __future__ import annotations
 
-import importlib
+import importlib.util
 import os
 from collections.abc import Iterator
 from contextlib import AbstractContextManager, contextmanager
-from typing import Any, cast
+from typing import cast
 
 from app.domain.models import GateRequest
 from bench.baselines.roboguard_style import RoboGuardStyle
@@ -29,7 +30,6 @@ from bench.gate_runner import embedded_client
 from bench.method import Decide, Method, Verdict
 
 METHOD_NAMES: tuple[str, ...] = ("safegate", "llm-classifier", "selp-style", "roboguard-style")
-CLASSIFIER_MODULE = "app.adapters.llm.classifier"
 
 
 class SafeGateMethod:
@@ -82,19 +82,15 @@ class LLMClassifierMethod:
     name = "llm-classifier"
     description = (
         "The paper's LLM classifier: one prompt with the same inputs (command, scene, user, "
-        "robot) and a direct authorize/defer/reject judgement (app/adapters/llm/)."
+        "robot) and a direct authorize/defer/reject judgement (bench/baselines/llm_classifier.py)."
     )
 
     def unavailable_reason(self) -> str | None:
-        """Why it cannot run: no model configured, or the adapter is not there yet."""
+        """Why it cannot run: no model configured, or litellm is not installed."""
         if not os.environ.get("SAFEGATE_LLM_MODEL"):
             return "no LLM configured"
-        try:
-            module = importlib.import_module(CLASSIFIER_MODULE)
-        except ImportError:
-            return f"{CLASSIFIER_MODULE} is not available"
-        if not callable(getattr(module, "LlmClassifier", None)):
-            return f"{CLASSIFIER_MODULE} has no LlmClassifier"
+        if importlib.util.find_spec("litellm") is None:
+            return "litellm is not installed (pip install -e '.[llm]')"
         return None
 
     def open(self) -> AbstractContextManager[Decide]:
@@ -106,15 +102,15 @@ class LLMClassifierMethod:
         from app.adapters.llm import LitellmClient
         from app.config import Settings
         from app.services.container import llm_config
+        from bench.baselines.llm_classifier import LlmClassifier
 
-        module = importlib.import_module(CLASSIFIER_MODULE)
-        classifier: Any = module.LlmClassifier(LitellmClient(llm_config(Settings())))
+        classifier = LlmClassifier(LitellmClient(llm_config(Settings())))
 
         def decide(request: GateRequest) -> Verdict:
             verdict = classifier.classify(request)
             prefix = "LLM call failed, deferred: " if verdict.failed else ""
             return Verdict(decision=cast(Decision, verdict.decision),
-                           reason=prefix + str(verdict.reason))
+                           reason=prefix + verdict.reason)
 
         yield decide
 

@@ -128,7 +128,7 @@ def render_markdown(evaluation: Evaluation, files: Sequence[str], plots: Sequenc
     lines = [
         "# SafeGate evaluation", "",
         f"{len(evaluation.cases)} cases from {', '.join(f'`{f}`' for f in files)}. "
-        "Produced by `safegate bench run` (`make bench`); every method sees every case "
+        "Produced by `python -m bench run` (`make bench`); every method sees every case "
         "and the same inputs (command, scene, user, robot).", "",
         "## Methods", "",
     ]

@@ -9,29 +9,33 @@ fills the cups of a running coffee machine and breaks thrown or dropped breakabl
 Refusals: only toggleable objects toggle (a stove burner is lit by its knob), only openable ones
 open, a microwave cannot run open, what is inside a closed receptacle cannot be taken out, nothing
 goes into a closed receptacle, and an object only goes into receptacles AI2-THOR accepts for its
-type (`data/compatible_receptacles.json`). Fails: never.
+type: the documented receptacles, those instances start in and those the docs parse lost, from
+the one AI2-THOR type table (`app/domain/world/ai2thor_table.py`). Fails: never.
 """
 
 from __future__ import annotations
 
-import json
 from dataclasses import replace
 from functools import cache
-from pathlib import Path
 
 from app.domain.formula.facts import FactValue
 from app.domain.world import Action, WorldState
+from app.domain.world.ai2thor_table import ai2thor_types
 from app.domain.world.entities import ObjectState, frozen_mapping
 
-_RECEPTACLES_FILE = Path(__file__).with_name("data") / "compatible_receptacles.json"
 _SINKS = frozenset({"Sink", "SinkBasin", "Bathtub", "BathtubBasin"})
 
 
 @cache
 def compatible_receptacles() -> dict[str, frozenset[str]]:
-    """Receptacle types AI2-THOR accepts, by pickupable object type."""
-    raw = json.loads(_RECEPTACLES_FILE.read_text(encoding="utf-8"))["types"]
-    return {name: frozenset(types) for name, types in raw.items()}
+    """Receptacle types AI2-THOR accepts, by pickupable object type (the Floor always does)."""
+    return {
+        name: frozenset(
+            {*row["receptacles"], *row["receptacles_start"], *row["receptacles_restored"]}
+        ) - {"Floor"}
+        for name, row in ai2thor_types().items()
+        if row["flags"].get("pickupable") is True
+    }
 
 
 def _true(value: FactValue) -> bool:

@@ -23,7 +23,7 @@ from typing import Any
 
 from asgi_correlation_id import CorrelationIdMiddleware, correlation_id
 from fastapi import FastAPI, Request, Response
-from prometheus_client import CONTENT_TYPE_LATEST, generate_latest
+from prometheus_client import CONTENT_TYPE_LATEST
 
 from app.metrics import Metrics
 
@@ -151,4 +151,4 @@ def install(app: FastAPI, metrics: Metrics, *, max_body_bytes: int) -> None:
 
     @app.get("/metrics", include_in_schema=False)
     def prometheus_metrics(_: Request) -> Response:
-        return Response(generate_latest(metrics.registry), media_type=CONTENT_TYPE_LATEST)
+        return Response(metrics.exposition(), media_type=CONTENT_TYPE_LATEST)

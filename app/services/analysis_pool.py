@@ -155,11 +155,13 @@ def _ready() -> int:
 class AnalysisPool:
     """Worker processes for Stages 1-5, with a bounded queue in front of them."""
 
-    def __init__(self, settings: Settings, templates: TemplateCache) -> None:
+    def __init__(self, settings: Settings, templates: TemplateCache,
+                 metrics: Metrics | None = None) -> None:
         self.settings = settings
         self.workers = settings.gate_workers or default_workers()
         self.capacity = self.workers + settings.gate_queue
         self._templates = templates
+        self._metrics = metrics or Metrics()
         self._in_flight = 0
         self._job_seconds = 0.05
         self._executor = self._new_executor()
@@ -220,6 +222,7 @@ class AnalysisPool:
             self._replace(executor)
             raise Unavailable("an analysis worker stopped; retry") from error
         self._in_flight += 1
+        self._count()
         waiting = asyncio.wrap_future(future)
         waiting.add_done_callback(self._finished)
         try:
@@ -229,8 +232,14 @@ class AnalysisPool:
             raise Unavailable("an analysis worker stopped while deciding; retry") from error
         return result
 
+    def _count(self) -> None:
+        """Publish the pool's load (gauges summed over replicas in multiprocess mode)."""
+        self._metrics.analysis_in_flight.set(self._in_flight)
+        self._metrics.analysis_queued.set(max(0, self._in_flight - self.workers))
+
     def _finished(self, done: asyncio.Future[tuple[Any, float]]) -> None:
         self._in_flight -= 1
+        self._count()
         if done.cancelled() or done.exception() is not None:
             return
         _, seconds = done.result()

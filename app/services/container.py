@@ -24,6 +24,7 @@ from app.domain.gate import GatePolicy
 from app.domain.pipeline import Analyzer, Reader
 from app.metrics import Metrics
 from app.store import Repository, create_engine_for, migrate, seed_templates
+from app.store.db import startup_lock
 
 
 class TemplateCache:
@@ -128,11 +129,12 @@ def build_analyzer(settings: Settings, cache: AnalysisCache | None = None) -> An
 def build_services(settings: Settings, *, metrics: Metrics | None = None) -> Services:
     """Connect, migrate, seed and load."""
     engine = create_engine_for(settings.database_url)
-    if settings.migrate_on_startup:
-        migrate(engine)
     repository = Repository(engine)
-    if settings.seed_on_startup:
-        seed_templates(repository, settings.templates_dir)
+    with startup_lock(engine):  # replicas starting together take turns
+        if settings.migrate_on_startup:
+            migrate(engine)
+        if settings.seed_on_startup:
+            seed_templates(repository, settings.templates_dir)
     analyzer = build_analyzer(settings, cache=repository)
     return Services(
         settings=settings,

@@ -22,6 +22,10 @@ Messages whose seq does not follow the last durable step get an `error` asking t
 resynchronise (`app/domain/monitor/`).
 One process owns a session at a time: a second process that appended to it makes the first one's
 next write fail (the event number is taken), so it reloads instead of answering from a stale state.
+Replicas: a session kept in memory here only for listeners (no runtime attached here) is reloaded
+from the database whenever a runtime attaches, a listener joins or its summary is read, so a
+runtime that moves from a dead replica to this one goes on from the durable state. Violations
+and refusals reach other replicas' listeners through the database (`monitoring_fanout.py`).
 Fails: `NotFound` (unknown contract or session), `Conflict` (exhausted contract), `FormulaError`
 (a contract that cannot be monitored), `Unavailable` (database) from `open_session`/`session`.
 """
@@ -31,38 +35,20 @@ from __future__ import annotations
 import asyncio
 import json
 import logging
-import threading
-from collections import OrderedDict
 from typing import Any
 
 import anyio.to_thread
 
-from app.domain.contracts import Contract
 from app.domain.errors import Conflict, InvalidInput, SafeGateError
 from app.domain.models import InitialState
-from app.domain.monitor import (
-    CompiledContract,
-    Monitor,
-    MonitorCounters,
-    MonitorSummary,
-    MonitorViolation,
-    Verdict,
-    decode_message,
-    replay,
-)
-from app.domain.world import WorldState, state_from_request
+from app.domain.monitor import MonitorSummary, Verdict, decode_message
 from app.services.container import Services
 from app.services.monitoring_commits import StepCommitter
-from app.services.monitoring_sessions import (
-    UNDECODABLE,
-    LiveSession,
-    Subscriber,
-    replayable,
-)
+from app.services.monitoring_loader import SessionLoader
+from app.services.monitoring_sessions import UNDECODABLE, LiveSession, Subscriber
 from app.store.records import ContractStatus, MonitorSessionRecord
 
 FLUSH_SECONDS = 0.25
-COMPILED_CACHE = 256
 _log = logging.getLogger("safegate.monitoring")
 
 
@@ -70,33 +56,22 @@ class MonitorService:
     """Every monitoring session of one app. The async methods run on the event loop; the
     blocking ones (`open_session`) in worker threads."""
 
-    def __init__(self, services: Services) -> None:
+    def __init__(self, services: Services, *, origin: str | None = None) -> None:
+        """Args:
+            services: the app's services.
+            origin: this replica's id when events fan out to other replicas through the
+                database (PostgreSQL); None when this process is the only one (SQLite).
+        """
         self._services = services
         self._repository = services.repository
         self._live: dict[str, LiveSession] = {}
         self._loading: dict[str, asyncio.Lock] = {}
-        self._compiled: OrderedDict[str, CompiledContract] = OrderedDict()
-        self._compiled_lock = threading.Lock()
-        self._commits = StepCommitter(self._repository)
+        self._loader = SessionLoader(self._repository)
+        self._commits = StepCommitter(self._repository, origin=origin)
+        self.origin = origin
+        self._open_gauge = services.metrics.monitor_sessions_open
 
     # Opening and loading sessions.
-    def _compiled_contract(self, contract_id: str, body: dict[str, Any]) -> CompiledContract:
-        with self._compiled_lock:  # called from worker threads
-            compiled = self._compiled.get(contract_id)
-        if compiled is None:
-            compiled = CompiledContract(Contract.model_validate(body))
-            with self._compiled_lock:
-                self._compiled[contract_id] = compiled
-                while len(self._compiled) > COMPILED_CACHE:
-                    self._compiled.popitem(last=False)
-        return compiled
-
-    def _initial_world(self, request_id: str, initial: InitialState) -> WorldState:
-        """The session's starting state; the task's user profile still describes its people."""
-        request = self._repository.get_gate_record(request_id).request
-        return state_from_request(request.model_copy(
-            update={"scene": initial.scene, "robot": initial.robot}))
-
     def open_session(
         self, contract_id: str, initial_state: InitialState | None = None
     ) -> MonitorSessionRecord:
@@ -116,85 +91,96 @@ class MonitorService:
         stored = self._repository.get_contract(contract_id)
         if stored.status is ContractStatus.EXHAUSTED:
             raise Conflict(f"contract {contract_id!r} is exhausted: its task was rejected")
-        self._compiled_contract(contract_id, stored.contract)
+        self._loader.compiled(contract_id, stored.contract)
         if initial_state is None:
             request = self._repository.get_gate_record(stored.request_id).request
             initial_state = InitialState(scene=request.scene, robot=request.robot)
         return self._repository.create_monitor_session(
             MonitorSessionRecord(contract_id=contract_id, initial_state=initial_state))
 
-    def _restore(self, session_id: str) -> LiveSession:
-        """Rebuild a session from the database (blocking)."""
-        record = self._repository.get_monitor_session(session_id)
-        stored = self._repository.get_contract(record.contract_id)
-        compiled = self._compiled_contract(record.contract_id, stored.contract)
-        world = self._initial_world(stored.request_id, record.initial_state)
-        if record.halted and record.halt_violation is not None:
-            monitor = Monitor(compiled, world, counters=MonitorCounters.from_json(record.counters),
-                              violation=MonitorViolation.from_wire(record.halt_violation))
-            return LiveSession(session_id, record.contract_id, monitor,
-                               next_event=self._repository.last_monitor_event_seq(session_id) + 1)
-        monitor = Monitor(compiled, world)
-        last_event, diverged = 0, 0
-        for event in self._repository.list_monitor_events(session_id):
-            last_event = event.seq
-            if event.type != "messages":
-                continue
-            entries = replayable(list(event.payload.get("messages", [])))
-            verdicts = replay(monitor, [entry["in"] for entry in entries])
-            diverged += sum(verdict.type != entry.get("out")
-                            for entry, verdict in zip(entries, verdicts, strict=True))
-        live = LiveSession(session_id, record.contract_id, monitor, next_event=last_event + 1)
-        if monitor.halted:  # only if the contract's meaning changed since; halting is safe
-            live.halt_saved = False
-        elif diverged:
-            _log.warning("monitor session %s: %d logged answers differ when replayed; asking "
-                         "its runtime to resynchronise", session_id, diverged)
-            monitor.require_sync("this session's state could not be rebuilt exactly after a "
-                                 "restart")
-        return live
-
     async def session(self, session_id: str) -> LiveSession:
-        """The live session, loaded (or rebuilt after a restart) on first use.
+        """The live session, loaded (or rebuilt after a restart) on first use; a session loaded
+        here that no runtime here drives is first brought up to what the database holds (a
+        runtime on another replica, or before a crash, may have moved it on).
 
         Raises:
-            NotFound: no such session.
+            NotFound: no such session. Unavailable: the database could not be read.
         """
         live = self._live.get(session_id)
         if live is not None:
+            await self.refresh(live)
             return live
         lock = self._loading.setdefault(session_id, asyncio.Lock())
         async with lock:
             live = self._live.get(session_id)
             if live is None:
-                live = await anyio.to_thread.run_sync(self._restore, session_id)
+                live = await anyio.to_thread.run_sync(self._loader.restore, session_id)
                 self._live[session_id] = live
                 if not live.halt_saved:
                     await self._commits.durable(live)
         self._loading.pop(session_id, None)
         return live
 
+    def loaded(self, session_id: str) -> LiveSession | None:
+        """The session if this process has it in memory (for the fan-out), else None."""
+        return self._live.get(session_id)
+
+    async def refresh(self, live: LiveSession) -> None:
+        """Put a session that no runtime drives here back where the database has it.
+
+        A session this process drives (a runtime attached, or writes pending) is left alone:
+        its memory is the newest state, and a second writer elsewhere makes its next write
+        fail, which reloads it. Anything else may be stale: it is replaced in place, so its
+        listeners stay subscribed.
+
+        Raises:
+            NotFound: no such session. Unavailable: the database could not be read.
+        """
+        async with live.reload_lock:
+            if live.driven or live.broken:
+                return
+            restored = await anyio.to_thread.run_sync(self._loader.restore, live.id)
+            if live.driven or live.broken:  # a runtime attached meanwhile: its state wins
+                return
+            live.monitor, live.next_event = restored.monitor, restored.next_event
+            live.halt_saved = restored.halt_saved
+            if not live.halt_saved:
+                await self._commits.durable(live)
+
+    async def halt_violation(self, session_id: str) -> dict[str, Any] | None:
+        """The stored violation that halted a session (for an abridged remote event)."""
+        return await anyio.to_thread.run_sync(self._loader.halt_violation, session_id)
+
+    def watched_elsewhere(self) -> list[LiveSession]:
+        """Sessions with listeners here that no runtime here drives (the fan-out's concern)."""
+        return [live for live in self._live.values() if live.subscribers and not live.driven]
+
     async def summary(self, session_id: str) -> tuple[str, MonitorSummary]:
-        """The session's contract id and MonitorSummary (from memory, else from the database).
+        """The session's contract id and MonitorSummary: from memory when a runtime here drives
+        it, else from the database (another replica may be driving it).
 
         Raises:
             NotFound: no such session.
         """
         live = self._live.get(session_id)
-        if live is None or live.broken:
-            live = await anyio.to_thread.run_sync(self._restore, session_id)
+        if live is None or live.broken or not live.driven:
+            live = await anyio.to_thread.run_sync(self._loader.restore, session_id)
         return live.contract_id, live.monitor.summary()
 
     # Connections.
     async def attach(self, session_id: str) -> LiveSession:
         """A runtime connects: the session, counted as in use until `detach`."""
         live = await self.session(session_id)
+        if live.clients == 0:
+            self._open_gauge.inc()
         live.clients += 1
         return live
 
     async def detach(self, live: LiveSession) -> None:
         """A runtime disconnects: write what is pending; unload the session once unused."""
         live.clients -= 1
+        if live.clients == 0:
+            self._open_gauge.dec()
         await self.flush(live)
         self._unload_if_unused(live)
 
@@ -240,6 +226,11 @@ class MonitorService:
             message = {UNDECODABLE: "the message is nested too deeply to decode"}
         verdict = live.monitor.step(message)
         live.record(message, verdict)
+        # Other replicas' listeners hear of a violation or refusal with the commit that
+        # stores it (`StepCommitter`); this process's listeners once it is answered.
+        event = live.event_for(verdict)
+        if event is not None:
+            live.outbox.append(event)
         if verdict.type in ("allow", "violation"):
             if verdict.type == "violation":
                 if verdict.violation is not None:
@@ -249,7 +240,6 @@ class MonitorService:
                 verdict = Verdict("error", verdict.seq, detail=(
                     "the step could not be stored, so it is not allowed: send the same message "
                     "again (the session goes on from its last stored step)"))
-        event = live.event_for(verdict)
         if event is not None:
             live.publish(event)
         return json.dumps(verdict.to_wire())
@@ -263,9 +253,9 @@ class MonitorService:
         async with live.reload_lock:
             if not live.broken:
                 return
-            restored = await anyio.to_thread.run_sync(self._restore, live.id)
+            restored = await anyio.to_thread.run_sync(self._loader.restore, live.id)
             live.monitor, live.next_event = restored.monitor, restored.next_event
-            live.log, live.written = [], live.recorded
+            live.log, live.outbox, live.written = [], [], live.recorded
             live.counters_at, live.halt_saved = live.recorded, restored.halt_saved
             live.broken = False
             if not live.halt_saved:

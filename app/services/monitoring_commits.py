@@ -6,7 +6,8 @@ Out: `durable(live)`, which returns once everything the session recorded so far 
 something to write, writes them all in one transaction on a dedicated thread (so a busy shared
 thread pool never delays a monitor answer), and wakes their waiters; what was recorded meanwhile
 goes in the next transaction. A sequential runtime pays one commit per message; many sessions
-share each commit.
+share each commit. With other replicas (PostgreSQL), each transaction also carries the events
+its entries answered (violations, refusals) as notifications, delivered when it commits.
 
 A failed write leaves a running session `broken`: the entries after its last durable one are
 dropped (they were checked against a state that is not durable) and every waiter is told False,
@@ -24,9 +25,11 @@ import asyncio
 import logging
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
+from typing import Any
 
 from app.domain.errors import SafeGateError
 from app.services.monitoring_sessions import LiveSession
+from app.store.notifications import notify_payload
 from app.store.repository import MonitorLogWrite, Repository
 
 _log = logging.getLogger("safegate.monitoring")
@@ -39,13 +42,20 @@ class _Taken:
     live: LiveSession
     write: MonitorLogWrite
     upto: int
+    events: list[dict[str, Any]]
 
 
 class StepCommitter:
     """The monitor's group commit (one per `MonitorService`)."""
 
-    def __init__(self, repository: Repository) -> None:
+    def __init__(self, repository: Repository, *, origin: str | None = None) -> None:
+        """Args:
+            repository: where steps are written.
+            origin: this replica's id, when each commit also notifies the other replicas of
+                the events it stores (PostgreSQL); None when there are none to tell.
+        """
         self._repository = repository
+        self._origin = origin
         self._executor = ThreadPoolExecutor(max_workers=1,
                                             thread_name_prefix="safegate-monitor-commit")
         self._dirty: dict[str, LiveSession] = {}
@@ -91,10 +101,10 @@ class StepCommitter:
                 for item in taken:
                     self._settle(item, item.live.id not in failed)
 
-    @staticmethod
-    def _take(live: LiveSession) -> _Taken:
+    def _take(self, live: LiveSession) -> _Taken:
         """Move what `live` has to write into a write (on the loop, between two steps)."""
         entries, live.log = live.log, []
+        events, live.outbox = live.outbox, []
         monitor = live.monitor
         halt = None
         if not live.halt_saved and monitor.violation is not None:
@@ -103,10 +113,14 @@ class StepCommitter:
         if halt is not None or live.counters_dirty:
             counters = monitor.counters.to_json()
             live.counters_dirty, live.counters_at = False, live.recorded
-        write = MonitorLogWrite(live.id, live.next_event, entries, counters, halt)
+        notifications: tuple[str, ...] = ()
+        if self._origin is not None:
+            notifications = tuple(notify_payload(self._origin, live.id, event)
+                                  for event in events)
+        write = MonitorLogWrite(live.id, live.next_event, entries, counters, halt, notifications)
         if entries:
             live.next_event += 1
-        return _Taken(live, write, live.recorded)
+        return _Taken(live, write, live.recorded, events)
 
     def _write(self, writes: list[MonitorLogWrite]) -> set[str]:
         """Commit the writes (on the writer thread); returns the sessions whose write failed.
@@ -153,6 +167,7 @@ class StepCommitter:
             live.counters_dirty = True
         if live.monitor.halted:
             live.log[:0] = write.entries  # kept for the next write, with the halt
+            live.outbox[:0] = item.events
         else:
             live.broken = True
             live.log = []

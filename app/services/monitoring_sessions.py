@@ -50,7 +50,8 @@ class LiveSession:
     the moment its halt is durable (or while a failed write awaits a retry); `counters_dirty`
     asks the next write to store the counters, `counters_at` is `recorded` when they last were.
     `broken`: a write failed, and the monitor may be ahead of the database; it is reloaded
-    before the next message is checked.
+    before the next message is checked. `outbox` holds the events for listeners on other
+    replicas, sent with the commit that stores the entries they answer.
     """
 
     id: str
@@ -58,6 +59,7 @@ class LiveSession:
     monitor: Monitor
     next_event: int = 1
     log: list[dict[str, Any]] = field(default_factory=list)
+    outbox: list[dict[str, Any]] = field(default_factory=list)
     recorded: int = 0
     written: int = 0
     waiters: list[tuple[int, asyncio.Future[bool]]] = field(default_factory=list)
@@ -68,6 +70,12 @@ class LiveSession:
     reload_lock: asyncio.Lock = field(default_factory=asyncio.Lock)
     clients: int = 0
     subscribers: set[Subscriber] = field(default_factory=set)
+
+    @property
+    def driven(self) -> bool:
+        """Whether this process drives the session: a runtime is attached here, or something
+        it answered is not yet written (so its memory is ahead of the database)."""
+        return bool(self.clients or self.log or self.waiters or not self.halt_saved)
 
     def record(self, message: object, verdict: Verdict) -> None:
         """Remember one exchange for the event log (and for replay after a restart)."""

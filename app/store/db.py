@@ -17,7 +17,7 @@ from typing import Any
 from alembic import command
 from alembic.config import Config
 from pydantic_core import to_json
-from sqlalchemy import Connection, Engine, create_engine, event, make_url
+from sqlalchemy import Connection, Engine, create_engine, event, make_url, text
 from sqlalchemy.engine import URL
 from sqlalchemy.exc import SQLAlchemyError
 from sqlalchemy.orm import Session, sessionmaker
@@ -29,6 +29,7 @@ DEFAULT_DATABASE_URL = "sqlite:///./safegate.db"
 MIGRATIONS_DIRECTORY = Path(__file__).resolve().parents[2] / "migrations"
 POSTGRES_CONNECT_TIMEOUT_SECONDS = 5
 SQLITE_BUSY_TIMEOUT_MS = 5000
+STARTUP_LOCK_KEY = 0x5AFE5EED  # start-up (migrate + seed); migrations/env.py holds its own key
 
 
 def _is_sqlite_memory(url: URL) -> bool:
@@ -138,6 +139,29 @@ def migrate(engine_or_url: Engine | str, revision: str = "head") -> None:
     finally:
         if owns_engine:
             engine.dispose()
+
+
+@contextmanager
+def startup_lock(engine: Engine) -> Iterator[None]:
+    """Hold a database-wide lock while one process migrates and seeds (PostgreSQL: an advisory
+    lock on a connection of its own), so replicas or workers starting together on one database
+    take turns instead of racing to create the same tables and templates. SQLite: nothing (its
+    writers already queue, and it serves one process).
+
+    Raises:
+        Unavailable: the lock could not be taken.
+    """
+    if engine.dialect.name != "postgresql":
+        yield
+        return
+    with database_errors("waiting for other replicas' start-up"), engine.connect() as holder:
+        holder.execute(text("SELECT pg_advisory_lock(:key)"), {"key": STARTUP_LOCK_KEY})
+        holder.commit()
+        try:
+            yield
+        finally:
+            holder.execute(text("SELECT pg_advisory_unlock(:key)"), {"key": STARTUP_LOCK_KEY})
+            holder.commit()
 
 
 def make_session_factory(engine: Engine) -> sessionmaker[Session]:

@@ -24,9 +24,10 @@ def free_port() -> int:
 
 @contextmanager
 def running_server(extra_env: dict[str, str] | None = None,
-                   checkout: Path | None = None) -> Iterator[str]:
-    """Yield the base URL of a one-worker SafeGate on a fresh SQLite file (or the database
-    `extra_env` names), run from `checkout` (another copy of the code) when given."""
+                   checkout: Path | None = None, workers: int = 1) -> Iterator[str]:
+    """Yield the base URL of a SafeGate (`workers` uvicorn workers, one by default) on a fresh
+    SQLite file (or the database `extra_env` names), run from `checkout` (another copy of the
+    code) when given."""
     port = free_port()
     with tempfile.TemporaryDirectory(prefix="safegate-perf-") as tmp:
         env = {
@@ -37,7 +38,8 @@ def running_server(extra_env: dict[str, str] | None = None,
         if checkout is not None:
             env["PYTHONPATH"] = str(checkout)
         process = subprocess.Popen(
-            [sys.executable, "-m", "app.cli", "serve", "--port", str(port)],
+            [sys.executable, "-m", "app.cli", "serve", "--port", str(port),
+             "--workers", str(workers)],
             env=env,
             cwd=checkout,
             stdout=subprocess.DEVNULL,

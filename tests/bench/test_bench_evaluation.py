@@ -1,4 +1,4 @@
-"""Running methods side by side, the report files and the `bench run` command."""
+"""Running methods side by side, the report files and the `python -m bench run` command."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from app.cli import cli
 from app.domain.models import GateRequest
 from bench.case import BenchmarkCase, BenchmarkError
+from bench.cli import bench_cli
 from bench.evaluation import evaluate, evaluation_json, run_method
 from bench.method import Decide, Verdict
 from bench.methods import LLMClassifierMethod, SafeGateMethod, build_method
@@ -134,6 +134,12 @@ class TestMethods:
         monkeypatch.delenv("SAFEGATE_LLM_MODEL", raising=False)
         assert LLMClassifierMethod().unavailable_reason() == "no LLM configured"
 
+    def test_llm_classifier_needs_litellm(self, monkeypatch: pytest.MonkeyPatch) -> None:
+        monkeypatch.setenv("SAFEGATE_LLM_MODEL", "openai/test-model")
+        monkeypatch.setattr("bench.methods.importlib.util.find_spec", lambda name: None)
+        reason = LLMClassifierMethod().unavailable_reason()
+        assert reason is not None and reason.startswith("litellm is not installed")
+
     def test_llm_classifier_plugs_in_the_adapter(self, monkeypatch: pytest.MonkeyPatch) -> None:
         import types
 
@@ -149,9 +155,8 @@ class TestMethods:
                                              reason="timeout" if failed else "knife for a child",
                                              failed=failed)
 
-        fake = types.SimpleNamespace(LlmClassifier=FakeClassifier)
         monkeypatch.setenv("SAFEGATE_LLM_MODEL", "openai/test-model")
-        monkeypatch.setattr("bench.methods.importlib.import_module", lambda name: fake)
+        monkeypatch.setattr("bench.baselines.llm_classifier.LlmClassifier", FakeClassifier)
         monkeypatch.setattr(llm_package, "LitellmClient", lambda config: config)
         method = LLMClassifierMethod()
         assert method.unavailable_reason() is None
@@ -176,8 +181,8 @@ class TestBenchRunCommand:
     def test_runs_the_baselines_and_writes_the_run(self, tmp_path: Path) -> None:
         cases = tmp_path / "mini.jsonl"
         cases.write_text("".join(c.model_dump_json() + "\n" for c in CASES))
-        result = CliRunner().invoke(cli, [
-            "bench", "run", str(cases), "--method", "selp-style", "--method", "roboguard-style",
+        result = CliRunner().invoke(bench_cli, [
+            "run", str(cases), "--method", "selp-style", "--method", "roboguard-style",
             "--out", str(tmp_path / "reports")])
         assert result.exit_code == 0, result.output
         assert "| `selp-style` |" in result.output
@@ -186,6 +191,6 @@ class TestBenchRunCommand:
     def test_unknown_method_exits_with_an_error(self, tmp_path: Path) -> None:
         cases = tmp_path / "mini.jsonl"
         cases.write_text("".join(c.model_dump_json() + "\n" for c in CASES))
-        result = CliRunner().invoke(cli, ["bench", "run", str(cases), "--method", "oracle",
-                                          "--out", str(tmp_path)])
+        result = CliRunner().invoke(bench_cli, ["run", str(cases), "--method", "oracle",
+                                                "--out", str(tmp_path)])
         assert result.exit_code == 2

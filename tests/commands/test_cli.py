@@ -1,4 +1,5 @@
-"""`safegate --version`, `safegate migrate` and the Rich key table, on real SQLite files."""
+"""`safegate --version`, `safegate migrate`, the Rich key table (on real SQLite files) and the
+note that `safegate bench` moved to `python -m bench`."""
 
 from __future__ import annotations
 
@@ -50,3 +51,13 @@ class TestKeysList:
         assert all(word in header for word in ("id", "role", "state", "created", "name"))
         assert "robot [x]" in listed.stdout and "curator [x]" in listed.stdout
         assert not any(secret in listed.stdout for secret in secrets)
+
+
+class TestBenchMoved:
+    def test_points_to_python_m_bench_and_fails(self, invoke: Invoke) -> None:
+        result = invoke("bench", "run", "bench/cases/benchmark.jsonl", "--method", "safegate")
+        assert result.exit_code == 2
+        assert "python -m bench run" in result.stderr
+
+    def test_is_not_listed_in_the_help(self, invoke: Invoke) -> None:
+        assert "bench" not in invoke("--help").stdout

@@ -6,7 +6,7 @@ from app.domain.models import InitialState, Person, Position, Scene
 from app.domain.world import WorldState, parse_action, state_from_request
 from sim.floorplans import load_floor_plan
 from sim.hazards import action_findings, final_findings, state_findings
-from sim.physics import restrictions
+from sim.physics import compatible_receptacles, restrictions
 from sim.scenario import Scenario
 from sim.simulator import ScriptedEvent, Simulator
 
@@ -80,6 +80,27 @@ class TestPhysics:
         assert refused.status == "failed"
         assert simulator.execute({"action": "ToggleObjectOn", "object": KNOB}).status == "ok"
         assert simulator.holds(f'hot(#"{pot}") and is_on(#"{BURNER}")')
+
+
+    def test_receptacles_come_from_the_one_ai2thor_table(self) -> None:
+        accepted = compatible_receptacles()
+        assert {"CounterTop", "SinkBasin"} <= accepted["Mug"]  # the documentation's list
+        assert "Microwave" in accepted["Mug"]  # restored: the docs parse lost it
+        assert "Chair" in accepted["Book"]  # where books start in the iTHOR scenes
+        assert "Fridge" not in accepted  # not pickupable: no list, nothing to check
+        assert not any("Floor" in types for types in accepted.values())
+
+    def test_a_mug_goes_into_the_open_microwave_but_not_onto_an_egg(self) -> None:
+        state = _run(_state(), {"action": "GoToObject", "object": MUG},
+                     {"action": "PickupObject", "object": MUG},
+                     {"action": "GoToObject", "object": MICROWAVE},
+                     {"action": "OpenObject", "object": MICROWAVE}).state
+        put = parse_action({"action": "PutObject", "object": MUG, "target": MICROWAVE}, step=0,
+                           state=state)
+        assert restrictions(state, put) == []
+        put_on_egg = parse_action({"action": "PutObject", "object": MUG, "target": EGG},
+                                  step=0, state=state)
+        assert any("does not accept a Mug" in r for r in restrictions(state, put_on_egg))
 
 
 class TestHazardLayer:

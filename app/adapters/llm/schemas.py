@@ -2,7 +2,6 @@
 
 In: nothing (declarations). Out: `LevelAnswer` (one level of the Hazard Analysis Matrix),
 `BatchedAnswer` (the three levels at once),
-`ClassifierAnswer` (the baseline's three-way judgement), `PlanAnswer` (an LLM planner's plan),
 and `json_schema(model)`, the model's JSON schema with `$ref`s inlined, because small local
 servers turn schemas into grammars and some do not follow references.
 Fails: pydantic `ValidationError` when an answer does not fit; `structured.py` handles it.
@@ -15,7 +14,6 @@ from typing import Any, Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.domain.models import Category, Confidence, Preventability, Severity
-from app.domain.world import CANONICAL_ACTIONS
 
 MAX_ITEMS = 40
 HAZARD_CLASS_PATTERN = r"^[a-z][a-z0-9_]{1,60}$"
@@ -98,39 +96,6 @@ class BatchedAnswer(_Answer):
     task: LevelAnswer
     deployment: LevelAnswer
     user: LevelAnswer
-
-
-class ClassifierAnswer(_Answer):
-    """The LLM classifier baseline's direct judgement."""
-
-    decision: Literal["authorize", "defer", "reject"]
-    reason: str = Field(min_length=1, max_length=1000)
-
-
-ActionNameLiteral = Literal[CANONICAL_ACTIONS]  # type: ignore[valid-type]
-
-
-class PlanStep(_Answer):
-    """One action of a plan, in the wire shape of `shared/spec/plans-and-monitoring.md`."""
-
-    action: ActionNameLiteral
-    object: str | None = None
-    target: str | None = None
-    relation: Literal["on", "in"] | None = None
-    liquid: str | None = None
-    seconds: float | None = Field(default=None, ge=0)
-    speed: float | None = Field(default=None, ge=0)
-    standoff: float | None = Field(default=None, ge=0)
-
-    def to_wire(self) -> dict[str, Any]:
-        """The step as a plan action dict, without absent arguments."""
-        return self.model_dump(exclude_none=True)
-
-
-class PlanAnswer(_Answer):
-    """An LLM planner's plan."""
-
-    steps: list[PlanStep] = Field(min_length=1, max_length=60)
 
 
 def json_schema(model: type[BaseModel]) -> dict[str, Any]:

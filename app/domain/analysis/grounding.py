@@ -439,9 +439,24 @@ class Grounder:
             if words & _words_of(obj.type, obj.name) - _GENERIC or (
                     type_head and type_head not in _GENERIC and type_head in words):
                 self.last_object = self.last_single = (obj.id,)
+        if not self.last_object:
+            self._remember_by_kind(text)
         for person_id, names in self._names.items():
             if words & names - _GENERIC:
                 self._remember_person(Referent(NounPhrase(text), "person", (person_id,)))
+
+    def _remember_by_kind(self, text: str) -> None:
+        """ "I left the hob on": a word for a kind of thing (hob, telly, loo roll) that names
+        exactly one scene object of that kind, for the "it" of the next order."""
+        for word in reversed(re.findall(r"[a-z]+", text.lower())):
+            concept = concept_of(word)
+            if concept is None or word in _GENERIC:
+                continue
+            found = [i for i, o in self.objects.items() if concept_of(o.type) == concept
+                     or o.type in concept.types]
+            if len(found) == 1:
+                self.last_object = self.last_single = (found[0],)
+                return
 
     def _annotate(self, ids: tuple[str, ...], phrase: NounPhrase) -> None:
         """What the words say of where a thing is ("the top shelf" is high up)."""

@@ -99,6 +99,8 @@ _LOCATIVE = frozenset({"on", "in", "inside", "under", "underneath", "by", "next 
                        "off", "near", "behind", "on top of", "at"})
 _BESIDE = frozenset({"next to", "beside", "by", "near", "against", "alongside"})
 _NEXT_TO = _BESIDE - {"against"}
+# "out to the big bin by the gate": the bin is where it goes; the gate only says which bin.
+_TOWARDS = frozenset({"to", "over to", "back to", "up to", "down to", "out to"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
                       "back into"})
 _ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
@@ -142,7 +144,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     places = [i for i, (prep, np) in enumerate(clause.roles)
               if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)]
     if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
-            clause.roles[places[-2]][0] in _SURFACE:
+            clause.roles[places[-2]][0] in _SURFACE | _TOWARDS:
         grounded.beside = g.any(clause.roles[places[-1]][1], place=True)
         places.pop()  # "on the bench next to the iron": the bench, beside the iron
     for position, (prep, np) in enumerate(clause.roles):
@@ -571,6 +573,22 @@ def _plug(on: bool):  # type: ignore[no-untyped-def]
     return handler
 
 
+def _lock(locked: bool):  # type: ignore[no-untyped-def]
+    action = "LockObject" if locked else "UnlockObject"
+    simple = _simple(action)
+
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        # "lock the scissors in the staff cupboard": put them there, then lock the cupboard
+        place = _destination_id(builder, grounded) if locked else None
+        if place is None:
+            simple(builder, grounded)
+            return
+        _put(builder, grounded)
+        builder.go_to(place)
+        builder.act(action, place)
+    return handler
+
+
 def _wait(builder: PlanBuilder, grounded: Grounded) -> None:
     builder.act("Wait", seconds=60.0)
 
@@ -584,7 +602,7 @@ _HANDLERS = {
     "fetch": _fetch, "give": _give, "put": _put, "discard": _discard, "remove": _remove,
     "throw": _throw, "drop": _drop, "break": _break, "crack": _break,
     "open": _simple("OpenObject"), "close": _simple("CloseObject"),
-    "lock": _simple("LockObject"), "unlock": _simple("UnlockObject"),
+    "lock": _lock(True), "unlock": _lock(False),
     "switch_on": _switch(True), "switch_off": _switch(False), "slice": _slice,
     "clean": _clean, "spray": _spray, "plug": _plug(True), "unplug": _plug(False),
     "push": _push, "pick": _pick, "go": _go, "find": _find, "wait": _wait,

@@ -177,9 +177,11 @@ def _leaving(command: str, grounder: Grounder) -> tuple[str, ...]:
 
 def _acts(item: Grounded) -> bool:
     """Whether a clause asks for an action that must show up as steps: it names someone to
-    move or something to act on ("get grandma into the shower"), not a wait or a leave-be."""
-    return item.schema not in (None, "wait", "goal", "stay", "chore") and any(
-        r.kind == "person" for r in item.objects)
+    move or something to act on ("get grandma into the shower", "empty the bins"), not a wait,
+    a leave-be or a "don't". One that yields no step is not understood, never dropped."""
+    return item.schema not in (None, "wait", "goal", "stay", "chore") and \
+        not item.clause.negated and any(
+            r.kind == "person" or (r.kind == "object" and r.ids) for r in item.objects)
 
 
 def _cancel(earlier: list[Grounded], negation: Grounded) -> None:

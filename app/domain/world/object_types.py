@@ -2,8 +2,8 @@
 
 In: an object type as a request gives it (an AI2-THOR type such as `StoveBurner`, or a plain
 noun such as "kitchen knife"). Out: a `TypeInfo` whose `flag`/`trait` lookups answer True,
-False, or None when the type does not determine the answer. The AI2-THOR part comes from
-`data/object_types.json` (built by `data/build_object_types.py`), with the receptacles
+False, or None when the type does not determine the answer. The AI2-THOR part comes from the
+one AI2-THOR type table (`ai2thor_table.py`: `data/ai2thor_types.json`), with the receptacles
 AI2-THOR's documentation lists for each type; the hazard traits (sharp, electrical, toxic,
 valuable...) are our own table below. A plain noun that is no AI2-THOR type ("wallet", "hair
 dryer") is read through the object concepts (`concepts.py`): the AI2-THOR type the concept is,
@@ -13,16 +13,14 @@ question, so every fact about it stays unknown.
 
 from __future__ import annotations
 
-import json
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cache
-from pathlib import Path
 from typing import Any
 
+from app.domain.world.ai2thor_table import ai2thor_types
 from app.domain.world.concepts import Concept, concept_of, modifier_concepts
-
-_DATA_FILE = Path(__file__).with_name("data") / "object_types.json"
 
 # Hazard traits by type. An AI2-THOR type not listed under a trait does not have it (False);
 # None marks a type where it depends on the instance (a spray bottle may hold water or bleach).
@@ -254,11 +252,11 @@ class TypeInfo:
 
 @cache
 def _table() -> dict[str, TypeInfo]:
-    raw: dict[str, Any] = json.loads(_DATA_FILE.read_text())["types"]
+    raw = ai2thor_types()
     names = set(raw) | set(_EXTRA_FLAGS) | {t for table in _TRAITS.values() for t in table}
     infos: dict[str, TypeInfo] = {}
     for name in sorted(names):
-        row = raw.get(name)
+        row: Mapping[str, Any] | None = raw.get(name)
         base = name.removesuffix("Sliced").removesuffix("Cracked")
         if base != name and row is not None and not row["flags"] and base in raw:
             # AI2-THOR's "BreadSliced" has no metadata of its own: it is bread, in pieces

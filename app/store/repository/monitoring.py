@@ -15,29 +15,33 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from sqlalchemy import func, insert, select, update
+from sqlalchemy import func, insert, select, text, update
 from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session
 
 from app.domain.errors import NotFound, Unavailable
 from app.domain.models import InitialState
+from app.store.notifications import CHANNEL
 from app.store.records import MonitorEventRecord, MonitorSessionRecord
 from app.store.repository._base import RepositoryBase
 from app.store.tables import ContractRow, MonitorEventRow, MonitorSessionRow, new_id, utc_now
 
 APPEND_RETRIES = 5
+_NOTIFY = text("SELECT pg_notify(:channel, :payload)")
 
 
 @dataclass(frozen=True, slots=True)
 class MonitorLogWrite:
     """What one session adds in one group commit: a `messages` event numbered `event_seq`
-    holding `entries` (none when `entries` is empty), its counters, and its halt."""
+    holding `entries` (none when `entries` is empty), its counters, its halt, and the
+    notifications (`app.store.notifications` payloads) other replicas get when it commits."""
 
     session_id: str
     event_seq: int
     entries: list[dict[str, Any]]
     counters: dict[str, Any] | None = None
     halt_violation: dict[str, Any] | None = None
+    notifications: tuple[str, ...] = ()
 
 
 def _to_session(row: MonitorSessionRow) -> MonitorSessionRecord:
@@ -206,7 +210,9 @@ class MonitorQueries(RepositoryBase):
 
         Each write appends its entries as one `messages` event numbered `event_seq`, replaces the
         session's counters when given, and halts it when a violation is given (the first halt
-        is kept, as in `update_monitor_session`). All or nothing.
+        is kept, as in `update_monitor_session`). All or nothing. On PostgreSQL each write's
+        notifications are sent with `pg_notify` in the same transaction, so the other replicas
+        hear of a halt when, and only if, it is committed (SQLite has no other process to tell).
 
         Raises:
             Unavailable: database error, including an event number already taken (another
@@ -229,6 +235,9 @@ class MonitorQueries(RepositoryBase):
                         update(MonitorSessionRow).where(MonitorSessionRow.id == w.session_id)
                         .where(MonitorSessionRow.halted.is_(False))
                         .values(halted=True, halt_violation=w.halt_violation, updated_at=now))
+            if connection.dialect.name == "postgresql":
+                for payload in (p for w in writes for p in w.notifications):
+                    connection.execute(_NOTIFY, {"channel": CHANNEL, "payload": payload})
 
     def last_monitor_event_seq(self, session_id: str) -> int:
         """The number of a session's last event (0 when it has none)."""

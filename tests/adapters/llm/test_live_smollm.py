@@ -22,12 +22,13 @@ from pathlib import Path
 import httpx
 import pytest
 
-from app.adapters.llm import LitellmClient, LlmAnalyzer, LlmClassifier, LlmConfig
+from app.adapters.llm import LitellmClient, LlmAnalyzer, LlmConfig
 from app.domain.binding import TemplateIndex
 from app.domain.ensemble import ANALYSIS_UNAVAILABLE
 from app.domain.gate import Decision
 from app.domain.pipeline import run_gate
 from app.store import load_library
+from bench.baselines.llm_classifier import LlmClassifier
 from tests.adapters.llm.answers import SAFE_REQUEST
 
 pytestmark = pytest.mark.llm_live

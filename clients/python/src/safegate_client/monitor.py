@@ -25,13 +25,18 @@ holds (its `resync.last_seq` is that action) counts as accepted. When the monito
 resynchronise and the client was given `current_state` (a callable returning the robot's whole
 state), it sends `sync` with it and the message again, once; without it, `MonitorResync` is
 raised. Nothing here ever lets an action run that the monitor did not allow.
+
+Replicas: SafeGate replicas on one PostgreSQL share every session. Behind a load balancer one URL
+is enough (a reconnect lands on a live replica); without one, give the others as
+`fallback_urls`: each reconnect tries the next URL in turn, and the session goes on there from
+its durable state.
 """
 
 from __future__ import annotations
 
 import json
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from types import TracebackType
 from typing import Any
 
@@ -93,7 +98,8 @@ class MonitorClient:
 
     def __init__(self, base_url: str, session_id: str, *, api_key: str | None = None,
                  first_seq: int = 1, timeout: float = 10.0, reconnects: int = 3,
-                 current_state: Callable[[], Observation] | None = None) -> None:
+                 current_state: Callable[[], Observation] | None = None,
+                 fallback_urls: Sequence[str] = ()) -> None:
         """Prepare a connection (opened by `__enter__` or `connect`).
 
         Args:
@@ -106,8 +112,11 @@ class MonitorClient:
                 (`MonitorConnectionError`); 0 never reconnects.
             current_state: the robot's whole current state (`{"scene": ..., "robot": ...}`),
                 sent as `sync` when the monitor asks to resynchronise.
+            fallback_urls: other replicas' base URLs; a reconnect tries the next one in turn.
         """
-        self.url = websocket_url(base_url, f"/monitor/{session_id}")
+        self.urls = [websocket_url(url, f"/monitor/{session_id}")
+                     for url in (base_url, *fallback_urls)]
+        self.url = self.urls[0]
         self.session_id = session_id
         self.next_seq = first_seq
         self.reconnects = reconnects
@@ -119,10 +128,21 @@ class MonitorClient:
         self._running: tuple[int, JsonObject] | None = None
 
     def connect(self) -> MonitorClient:
-        """Open the websocket."""
-        self._socket = open_socket(self.url, self._api_key, self._timeout)
+        """Open the websocket (on the first URL that accepts it)."""
+        for _ in self.urls[1:]:
+            try:
+                self._socket = open_socket(self.url, self._api_key, self._timeout)
+                break
+            except MonitorConnectionError:
+                self._next_url()
+        else:
+            self._socket = open_socket(self.url, self._api_key, self._timeout)
         self._open = True
         return self
+
+    def _next_url(self) -> None:
+        """Move on to the next replica's URL (the same one when there is only one)."""
+        self.url = self.urls[(self.urls.index(self.url) + 1) % len(self.urls)]
 
     def close(self) -> None:
         """Close the websocket."""
@@ -153,6 +173,7 @@ class MonitorClient:
                 return read_answer(self._socket.recv(timeout=self._timeout)), attempt > 0
             except (ConnectionClosed, TimeoutError, OSError, MonitorConnectionError) as error:
                 lost = error
+                self._next_url()
                 if self._socket is not None:
                     # A late answer on this socket must never be taken for the next one's.
                     self._socket.close()

@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 import pytest
 
-from app.adapters.llm import LitellmClient, LlmClassifier
+from app.adapters.llm import LitellmClient
+from bench.baselines.llm_classifier import LlmClassifier
 from tests.adapters.llm.answers import COFFEE_REQUEST
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
 

@@ -1,0 +1,5 @@
+"""`python -m bench run|score FILES...`: the evaluation command line (`bench/cli.py`)."""
+
+from bench.cli import main
+
+main()
