@@ -4,12 +4,15 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint install browsers web bench bench-sealed perf sim clean fuzz faults
+.PHONY: run test lint install browsers web bench bench-sealed perf sim clean fuzz faults client-models
 
-$(STAMP): pyproject.toml
+# The client SDK is its own distribution (clients/python); the tests and the README's examples
+# use it, and its `codegen` extra brings the pinned model generator of `make client-models`.
+$(STAMP): pyproject.toml clients/python/pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
 	$(BIN)/pip install --quiet -e '.[dev]'
+	$(BIN)/pip install --quiet -e './clients/python[codegen]'
 	touch $(STAMP)
 
 install: $(STAMP)
@@ -40,9 +43,16 @@ test: $(STAMP) browsers
 	$(MAKE) --no-print-directory lint
 
 lint: $(STAMP)
-	$(BIN)/ruff check app bench tests $(wildcard sim)
+	$(BIN)/ruff check app bench tests clients $(wildcard sim)
 	$(BIN)/mypy app
+	$(BIN)/mypy --strict clients/python/src/safegate_client
 	$(BIN)/lint-imports
+
+## The SDK's wire models (clients/python/src/safegate_client/models/), generated from the
+## server's OpenAPI document and docs/api/asyncapi.yaml by datamodel-code-generator; commit the
+## result. tests/client/test_client_models.py fails when the committed models drift.
+client-models: $(STAMP)
+	$(BIN)/python clients/python/codegen.py
 
 ## The paper's evaluation: every method on the benchmark; report, JSON and plots from scratch
 ## in bench/reports/benchmark/ (embedded analyzer, no network; the LLM classifier runs only

@@ -1,31 +1,32 @@
-"""The SafeGate client SDK, for planners and robot runtimes.
+"""Where the client SDK used to live: `app.client` now re-exports `safegate_client`.
 
-- `GateClient` (HTTP, httpx): `gate`, `answer`, `decision`, `contract`, `planner_constraints`,
-  `verify`, `open_monitor`, `monitor_summary`; `AsyncGateClient` the same for asyncio. Both
-  take the service's request models (`GateRequest`, `InitialState`) or plain mappings, and
-  retry per `RetryPolicy` (connection failures, timeouts, 502/503/504 with `Retry-After`).
-- `MonitorClient` (websocket): `before`, `after`, and `step(action, execute)`, which raises
-  `MonitorHalted` when the session halts; `sync(state, seq)` after a `MonitorResync`; it
-  reconnects and resumes by itself (`reconnects`, `current_state`).
-- `MonitorEvents` (websocket): a dashboard's stream of violations and refusals.
-Errors: `app.client.errors` (one tree under `SafeGateClientError`). The SDK imports nothing from
-the server side, only httpx, websockets and pydantic (any model is sent by its wire names).
-No failure, of SafeGate or of the network, is ever turned into an allow.
+The SDK is its own distribution, `safegate-client` (`clients/python/`, `pip install
+./clients/python`), so a planner needs neither the server nor its dependencies. This module
+only keeps old imports (`from app.client import GateClient`) working where the SDK is
+installed; nothing of the server imports it, and the server does not depend on the SDK (an
+import-linter contract says so). New code imports `safegate_client`.
+Fails: `ImportError` naming the distribution to install when `safegate_client` is missing.
 """
 
-from app.client.errors import (
-    ApiError,
-    MonitorConnectionError,
-    MonitorError,
-    MonitorHalted,
-    MonitorResync,
-    SafeGateClientError,
-    SafeGateUnavailable,
-)
-from app.client.gate import GateClient
-from app.client.gate_async import AsyncGateClient
-from app.client.monitor import MonitorClient, MonitorEvents
-from app.client.retry import RetryPolicy
+try:
+    from safegate_client import (
+        ApiError,
+        AsyncGateClient,
+        GateClient,
+        MonitorClient,
+        MonitorConnectionError,
+        MonitorError,
+        MonitorEvents,
+        MonitorHalted,
+        MonitorResync,
+        RetryPolicy,
+        SafeGateClientError,
+        SafeGateUnavailable,
+        UnexpectedAnswer,
+    )
+except ModuleNotFoundError as missing:  # pragma: no cover - depends on the environment
+    raise ImportError("app.client re-exports the SafeGate SDK: pip install ./clients/python "
+                      "(the `safegate-client` distribution)") from missing
 
 __all__ = [
     "ApiError",
@@ -40,4 +41,5 @@ __all__ = [
     "RetryPolicy",
     "SafeGateClientError",
     "SafeGateUnavailable",
+    "UnexpectedAnswer",
 ]

@@ -5,14 +5,14 @@ monitor client reconnecting and resuming with the resync protocol (real server o
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import httpx
 import pytest
 from monitor_kit import GO_TO_MUG, PICK_MUG, REQUEST, TOGGLE_STOVE, store_contract
-
-from app.client import (
+from safegate_client import (
     ApiError,
     AsyncGateClient,
     GateClient,
@@ -20,8 +20,11 @@ from app.client import (
     MonitorHalted,
     RetryPolicy,
     SafeGateUnavailable,
+    UnexpectedAnswer,
 )
-from app.domain.models import GateRequest
+from safegate_client.models import GateRequest, GateResponse, VerifyResponse
+from websockets.sync.server import Server, ServerConnection, serve
+
 from app.store.repository import Repository
 
 FAST = RetryPolicy(attempts=3, backoff=0.01, max_wait=0.05)
@@ -45,12 +48,14 @@ def counting(answers: list[httpx.Response | Exception]) -> tuple[httpx.MockTrans
 
 class TestRetries:
     def test_a_busy_gate_is_asked_again_and_its_answer_used(self) -> None:
-        decision = {"decision": "reject", "rule": "R1"}
+        decision = {"request_id": "r1", "decision": "reject", "rule": "R1", "defer_kind": None,
+                    "question": None, "reason": "a child", "hazards": [], "unknowns": [],
+                    "triggers": [], "contract_id": None, "analyzer": "symbolic"}
         transport, calls = counting([
             httpx.Response(503, json=BUSY, headers={"Retry-After": "0"}),
             httpx.Response(200, json=decision)])
         with GateClient("http://safegate.test", retry=FAST, transport=transport) as gate:
-            assert gate.gate({"command": "x"}) == decision
+            assert gate.gate({"command": "x"}) == GateResponse.model_validate(decision)
         assert calls[0] == 2
 
     def test_a_gate_busy_through_every_retry_raises_and_never_decides(self) -> None:
@@ -95,15 +100,15 @@ class TestAsyncGateClient:
         server = live_server()
         contract_id = store_contract(server_repository)
 
-        async def run() -> tuple[dict[str, Any], dict[str, Any], str]:
+        async def run() -> tuple[GateResponse, VerifyResponse, str]:
             async with AsyncGateClient(server.base_url) as gate:
                 decision = await gate.gate(GateRequest.model_validate(REQUEST))
                 verdict = await gate.verify(contract_id, [GO_TO_MUG, PICK_MUG])
                 return decision, verdict, await gate.open_monitor(contract_id)
 
         decision, verdict, session_id = asyncio.run(run())
-        assert decision["decision"] in {"authorize", "defer", "reject"}
-        assert verdict["ok"] is True
+        assert decision.decision in {"authorize", "defer", "reject"}
+        assert verdict.ok is True
         assert session_id
 
     def test_the_async_client_raises_for_an_error_status(
@@ -133,7 +138,7 @@ class TestMonitorReconnect:
             monitor.step(PICK_MUG, lambda: {"robot": {"holding": "mug_1"}})
         with GateClient(server.base_url) as gate:
             summary = gate.monitor_summary(session_id)
-        assert (summary["last_seq"], summary["pending_seq"], summary["errors"]) == (2, None, 0)
+        assert (summary.last_seq, summary.pending_seq, summary.errors) == (2, None, 0)
 
     def test_an_after_the_monitor_already_holds_counts_as_accepted(
             self, live_server: Callable[..., Any], server_repository: Repository) -> None:
@@ -166,7 +171,7 @@ class TestMonitorReconnect:
             assert monitor.before(GO_TO_MUG) == 3
         with GateClient(server.base_url) as gate:
             summary = gate.monitor_summary(session_id)
-        assert (summary["last_seq"], summary["pending_seq"]) == (2, 3)
+        assert (summary.last_seq, summary.pending_seq) == (2, 3)
 
     def test_a_halt_is_never_resumed_past(
             self, live_server: Callable[..., Any], server_repository: Repository) -> None:
@@ -181,3 +186,29 @@ class TestMonitorReconnect:
             monitor._socket.close()
             with pytest.raises(MonitorHalted):
                 monitor.before(GO_TO_MUG)
+
+
+@pytest.fixture
+def garbling_monitor() -> Iterator[str]:
+    """A websocket server on loopback answering every message with something that is none of
+    the protocol's answers (`"allowed"` is not `"allow"`); yields its base URL."""
+    def answer(connection: ServerConnection) -> None:
+        for _ in connection:
+            connection.send('{"type": "allowed", "seq": 1}')
+
+    server: Server = serve(answer, "127.0.0.1", 0)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    yield f"http://127.0.0.1:{server.socket.getsockname()[1]}"
+    server.shutdown()
+    thread.join(timeout=10)
+
+
+class TestUnreadableMonitorAnswers:
+    def test_an_answer_of_no_known_type_never_lets_the_action_run(
+            self, garbling_monitor: str) -> None:
+        ran: list[str] = []
+        with MonitorClient(garbling_monitor, "s1") as monitor, \
+                pytest.raises(UnexpectedAnswer, match="none of the protocol's"):
+            monitor.step(GO_TO_MUG, lambda: ran.append("moved"))
+        assert ran == []

@@ -21,8 +21,7 @@ from monitor_kit import (
     before,
     store_contract,
 )
-
-from app.client import (
+from safegate_client import (
     ApiError,
     GateClient,
     MonitorClient,
@@ -30,7 +29,17 @@ from app.client import (
     MonitorEvents,
     MonitorHalted,
     MonitorResync,
+    UnexpectedAnswer,
 )
+from safegate_client.models import (
+    Action,
+    ContractResponse,
+    GateResponse,
+    InitialState,
+    Status,
+    ViolationEvent,
+)
+
 from app.store.repository import Repository
 
 StartServer = Callable[..., Any]
@@ -50,18 +59,20 @@ class TestGateClient:
     def test_gate_answers_a_decision(self, server: Any) -> None:
         with GateClient(server.base_url) as gate:
             body = gate.gate(REQUEST)
-        assert body["decision"] in {"authorize", "defer", "reject"}
-        assert body["request_id"]
+        assert isinstance(body, GateResponse)
+        assert body.decision in {"authorize", "defer", "reject"}
+        assert body.request_id
 
     def test_gate_asks_for_a_reference_plan_that_verify_passes(self, server: Any) -> None:
         from tests.scope_kit import TEA_REQUEST
 
         with GateClient(server.base_url) as gate:
             body = gate.gate(TEA_REQUEST, reference_plan=True)
-            assert body["decision"] == "authorize", body
-            plan = body["reference_plan"]["plan"]
-            assert gate.verify(body["contract_id"], plan)["ok"] is True
-            assert gate.gate(TEA_REQUEST)["reference_plan"] is None
+            assert body.decision == "authorize", body
+            assert body.contract_id is not None and body.reference_plan is not None
+            plan = body.reference_plan.plan
+            assert gate.verify(body.contract_id, plan).ok is True
+            assert gate.gate(TEA_REQUEST).reference_plan is None
 
     def test_an_error_status_raises_with_the_problem(self, server: Any) -> None:
         with GateClient(server.base_url) as gate, pytest.raises(ApiError) as raised:
@@ -73,25 +84,39 @@ class TestGateClient:
             self, server: Any, server_repository: Repository) -> None:
         contract_id = store_contract(server_repository)
         with GateClient(server.base_url) as gate:
-            guards = gate.contract(contract_id)["guards"]
+            contract = gate.contract(contract_id)
             session_id = gate.open_monitor(contract_id)
             summary = gate.monitor_summary(session_id)
-        assert {g["id"] for g in guards} >= {"skill.toggle", "skill.pick"}
-        assert (summary["actions_checked"], summary["halted"]) == (0, False)
+        assert isinstance(contract, ContractResponse)
+        assert {g.id for g in contract.guards} >= {"skill.toggle", "skill.pick"}
+        assert (summary.actions_checked, summary.halted) == (0, False)
 
     def test_verify_posts_the_spec_body(self) -> None:
         seen: list[dict[str, Any]] = []
 
         def handler(request: httpx.Request) -> httpx.Response:
             seen.append(json.loads(request.content))
-            return httpx.Response(200, json={"ok": True, "violations": []})
+            return httpx.Response(200, json={"ok": True, "violations": [], "attempts": 1,
+                                             "attempts_left": 2, "decision": "authorize"})
 
-        plan = [PICK_MUG]
         state = {"scene": {}, "robot": {"holding": None}}
         with GateClient("http://safegate.test", api_key="k",
                         transport=httpx.MockTransport(handler)) as gate:
-            assert gate.verify("c1", plan, state)["ok"] is True
-        assert seen == [{"contract_id": "c1", "plan": plan, "initial_state": state}]
+            assert gate.verify("c1", [PICK_MUG], state).ok is True
+            # Models are sent by their wire names, with the fields that were set (an explicit
+            # null included: `holding: null` is "holds nothing", not "unknown").
+            gate.verify("c1", [Action(action="PickupObject", object="mug_1")],
+                        InitialState.model_validate(state))
+        expected = {"contract_id": "c1", "plan": [PICK_MUG], "initial_state": state}
+        assert seen == [expected, expected]
+
+    def test_an_answer_of_the_wrong_shape_is_never_a_decision(self) -> None:
+        def handler(request: httpx.Request) -> httpx.Response:
+            return httpx.Response(200, json={"decision": "authorize", "rule": "R9"})
+
+        with GateClient("http://safegate.test", transport=httpx.MockTransport(handler)) as gate, \
+                pytest.raises(UnexpectedAnswer, match="not a GateResponse"):
+            gate.gate({"command": "x"})
 
 
 class TestMonitorClient:
@@ -120,7 +145,8 @@ class TestMonitorClient:
                 pytest.raises(MonitorHalted) as halted:
             monitor.step(TOGGLE_STOVE, toggle)
         assert ran == []
-        assert halted.value.violation["condition_id"] == "skill.toggle"
+        assert halted.value.violation is not None
+        assert halted.value.violation.condition_id == "skill.toggle"
 
     def test_an_unchecked_message_raises_monitor_error(
             self, server: Any, server_repository: Repository) -> None:
@@ -144,19 +170,20 @@ class TestMonitorClient:
             assert monitor.before(GO_TO_MUG) == 3
         with GateClient(server.base_url) as gate:
             summary = gate.monitor_summary(session_id)
-        assert (summary["last_seq"], summary["pending_seq"]) == (2, 3)
+        assert (summary.last_seq, summary.pending_seq) == (2, 3)
 
     def test_listeners_see_the_violation(self, server: Any,
                                          server_repository: Repository) -> None:
         session_id = open_session(server, server_repository)
         with MonitorEvents(server.base_url, session_id) as events:
-            assert events.next()["type"] == "status"
+            status = events.next()
+            assert isinstance(status, Status) and status.session_id == session_id
             with MonitorClient(server.base_url, session_id) as monitor, \
                     pytest.raises(MonitorHalted):
                 monitor.before(TOGGLE_STOVE)
             event = events.next()
-        assert event["type"] == "violation"
-        assert event["violation"]["condition_id"] == "skill.toggle"
+        assert isinstance(event, ViolationEvent)
+        assert event.violation.condition_id == "skill.toggle"
 
 
 class TestRestart:
@@ -170,10 +197,11 @@ class TestRestart:
         with MonitorClient(server.base_url, session_id, first_seq=2) as monitor, \
                 pytest.raises(MonitorHalted) as refused:
             monitor.before(GO_TO_MUG)
-        assert refused.value.answer["type"] == "halted"
-        assert refused.value.violation["condition_id"] == "skill.toggle"
+        assert refused.value.answer.type == "halted"
+        assert refused.value.violation is not None
+        assert refused.value.violation.condition_id == "skill.toggle"
         with GateClient(server.base_url) as gate:
-            assert gate.monitor_summary(session_id)["halted"] is True
+            assert gate.monitor_summary(session_id).halted is True
 
     def test_a_running_session_resumes_its_pending_action_after_a_restart(
             self, server: Any, server_repository: Repository) -> None:
@@ -185,7 +213,7 @@ class TestRestart:
         server.start()
         with GateClient(server.base_url) as gate:
             summary = gate.monitor_summary(session_id)
-        assert (summary["last_seq"], summary["pending_seq"]) == (1, 2)
+        assert (summary.last_seq, summary.pending_seq) == (1, 2)
         import websockets.sync.client as ws
 
         with ws.connect(server.ws_url + f"/monitor/{session_id}") as socket:
@@ -193,3 +221,13 @@ class TestRestart:
             assert json.loads(socket.recv(timeout=10)) == {"type": "allow", "seq": 2}
             socket.send(json.dumps(before(3, TOGGLE_STOVE)))
             assert json.loads(socket.recv(timeout=10))["type"] == "violation"
+
+
+class TestOldImports:
+    def test_app_client_re_exports_the_sdk(self) -> None:
+        import safegate_client
+
+        import app.client
+
+        for name in app.client.__all__:
+            assert getattr(app.client, name) is getattr(safegate_client, name), name

@@ -27,9 +27,8 @@ from monitor_kit import (
     before,
 )
 from replica_kit import BLADE_NEAR_PERSON, QUIET, knife_contract_in, open_session
+from safegate_client import MonitorClient, MonitorHalted
 from websockets.sync.client import ClientConnection, connect
-
-from app.client import MonitorClient, MonitorHalted
 
 pytestmark = [pytest.mark.faults, pytest.mark.slow, pytest.mark.postgres]
 
@@ -118,7 +117,8 @@ class TestFailover:
                 runtime.after()
             event = next_event(watcher)
         assert seq == 3
-        assert halted.value.answer["violation"]["condition_id"] == BLADE_NEAR_PERSON
+        assert halted.value.violation is not None
+        assert halted.value.violation.condition_id == BLADE_NEAR_PERSON
         assert event["type"] == "violation" and event["seq"] == 3
         summary = summary_of(b, session_id)
         assert (summary["actions_checked"], summary["states_checked"], summary["halted"]) == (

@@ -22,8 +22,7 @@ import httpx
 import pytest
 from monitor_kit import CARRY_KNIFE_FAST, GO_TO_KNIFE, PICK_KNIFE
 from replica_kit import BLADE_NEAR_PERSON, QUIET, knife_contract_in, open_session
-
-from app.client import MonitorClient, MonitorHalted
+from safegate_client import MonitorClient, MonitorHalted
 
 pytestmark = [pytest.mark.faults, pytest.mark.slow, pytest.mark.postgres]
 
@@ -104,7 +103,8 @@ class TestThroughTheProxy:
             assert runtime.before(CARRY_KNIFE_FAST) == 3
             with pytest.raises(MonitorHalted) as halted:
                 runtime.after()
-        assert halted.value.answer["violation"]["condition_id"] == BLADE_NEAR_PERSON
+        assert halted.value.violation is not None
+        assert halted.value.violation.condition_id == BLADE_NEAR_PERSON
         summary = httpx.get(f"{survivor.base_url}/monitor/{session_id}/summary",
                             timeout=10).json()
         assert (summary["actions_checked"], summary["halted"]) == (3, True)

@@ -1,13 +1,16 @@
-"""`MonitorClient` for robot runtimes and `MonitorEvents` for dashboards (sync websockets).
+"""`MonitorClient`: a robot runtime's connection to a monitoring session (sync websocket).
 
 In: SafeGate's base URL, a session id from `GateClient.open_monitor`, and per action the action
 (`{"action": "PickupObject", "object": "mug_1"}`) with optional scene observations
 (`{"scene": {...}, "robot": {...}}`, partial: listed entities replace those with the same id).
 Out: nothing when the monitor allows; the after-state your `execute` callback observed.
+Answers are read into the models of `safegate_client.models` (`MonitorEvents` is in
+`safegate_client/events.py`).
 Fails: `MonitorHalted` when the session halts (now or earlier): stop the robot;
 `MonitorError` when a message could not be checked (the action is not allowed), and its subclass
 `MonitorResync` when it does not follow the session's last stored step;
-`MonitorConnectionError` when the socket cannot be opened, closes, or answers out of order.
+`MonitorConnectionError` when the socket cannot be opened, closes, or answers out of order;
+`UnexpectedAnswer` for an answer that is none of the protocol's (the action is not allowed).
 
 The client numbers its messages `seq` = first_seq, first_seq + 1, ... A runtime that reconnects
 to a session goes on from the session's `last_seq` + 1 (see `GateClient.monitor_summary`). After
@@ -33,23 +36,29 @@ from __future__ import annotations
 
 import json
 import time
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from types import TracebackType
 from typing import Any
 
+from pydantic import BaseModel, ValidationError
 from websockets.exceptions import ConnectionClosed, WebSocketException
 from websockets.sync.client import ClientConnection, connect
 
-from app.client.errors import (
+from safegate_client.errors import (
     MonitorConnectionError,
     MonitorError,
     MonitorHalted,
     MonitorResync,
+    UnexpectedAnswer,
 )
-from app.client.gate import auth_headers
+from safegate_client.models import Allow, ErrorAnswer, HaltedAnswer, ViolationAnswer, parse_answer
+from safegate_client.wire import as_json, auth_headers
 
 JsonObject = dict[str, Any]
-Observation = Mapping[str, Any]
+Observation = Mapping[str, Any] | BaseModel
+"""A (partial) state: `{"scene": {...}, "robot": {...}}`, or a `State` / `InitialState`."""
+Action = Mapping[str, Any] | BaseModel
+"""An action: `{"action": "PickupObject", "object": "mug_1"}`, or an `Action`."""
 
 
 def websocket_url(base_url: str, path: str) -> str:
@@ -62,7 +71,20 @@ def websocket_url(base_url: str, path: str) -> str:
     return base + path
 
 
-def _open(url: str, api_key: str | None, timeout: float) -> ClientConnection:
+def read_answer(text: str | bytes) -> Allow | ViolationAnswer | HaltedAnswer | ErrorAnswer:
+    """A websocket answer as its model.
+
+    Raises:
+        UnexpectedAnswer: not JSON, or none of the protocol's answers.
+    """
+    try:
+        return parse_answer(json.loads(text))
+    except (ValueError, ValidationError) as error:
+        raise UnexpectedAnswer(f"the monitor's answer is none of the protocol's: {error}"
+                               ) from error
+
+
+def open_socket(url: str, api_key: str | None, timeout: float) -> ClientConnection:
     try:
         # Entered by hand: the connection outlives this call and is closed by its owner.
         return connect(url, additional_headers=auth_headers(api_key), open_timeout=timeout,
@@ -109,12 +131,12 @@ class MonitorClient:
         """Open the websocket (on the first URL that accepts it)."""
         for _ in self.urls[1:]:
             try:
-                self._socket = _open(self.url, self._api_key, self._timeout)
+                self._socket = open_socket(self.url, self._api_key, self._timeout)
                 break
             except MonitorConnectionError:
                 self._next_url()
         else:
-            self._socket = _open(self.url, self._api_key, self._timeout)
+            self._socket = open_socket(self.url, self._api_key, self._timeout)
         self._open = True
         return self
 
@@ -136,7 +158,8 @@ class MonitorClient:
                  trace: TracebackType | None) -> None:
         self.close()
 
-    def _send_and_receive(self, message: JsonObject) -> tuple[JsonObject, bool]:
+    def _send_and_receive(self, message: JsonObject
+                          ) -> tuple[Allow | ViolationAnswer | HaltedAnswer | ErrorAnswer, bool]:
         """The answer to a message, reconnecting and resending it as needed; and whether it
         was resent."""
         if not self._open:
@@ -145,10 +168,9 @@ class MonitorClient:
             try:
                 if self._socket is None:
                     time.sleep(min(0.2 * 2 ** attempt, 5.0))
-                    self._socket = _open(self.url, self._api_key, self._timeout)
+                    self._socket = open_socket(self.url, self._api_key, self._timeout)
                 self._socket.send(json.dumps(message))
-                answer: JsonObject = json.loads(self._socket.recv(timeout=self._timeout))
-                return answer, attempt > 0
+                return read_answer(self._socket.recv(timeout=self._timeout)), attempt > 0
             except (ConnectionClosed, TimeoutError, OSError, MonitorConnectionError) as error:
                 lost = error
                 self._next_url()
@@ -158,38 +180,37 @@ class MonitorClient:
                     self._socket = None
         raise MonitorConnectionError(f"monitor connection lost: {lost}") from lost
 
-    def _exchange(self, message: JsonObject, *, resyncing: bool = False) -> JsonObject:
+    def _exchange(self, message: JsonObject, *, resyncing: bool = False) -> Allow:
         answer, resent = self._send_and_receive(message)
-        position = answer.get("resync")
-        if answer.get("type") == "error" and isinstance(position, dict):
-            if resent and message["type"] == "after" and position == {
-                    "last_seq": message["seq"], "pending_seq": None}:
-                return {"type": "allow", "seq": message["seq"]}  # accepted before the drop
+        if isinstance(answer, ErrorAnswer) and answer.resync is not None:
+            position = answer.resync
+            if resent and message["type"] == "after" and (
+                    position.last_seq, position.pending_seq) == (message["seq"], None):
+                return Allow(type="allow", seq=message["seq"])  # accepted before the drop
             if self._current_state is not None and not resyncing:
                 return self._resume(message)
-        if answer.get("seq") != message["seq"] and answer.get("type") != "error":
-            raise MonitorConnectionError(f"answer for seq {answer.get('seq')} while waiting "
+        if answer.seq != message["seq"] and not isinstance(answer, ErrorAnswer):
+            raise MonitorConnectionError(f"answer for seq {answer.seq} while waiting "
                                          f"for seq {message['seq']}")
-        kind = answer.get("type")
-        if kind == "allow":
+        if isinstance(answer, Allow):
             return answer
-        if kind in ("violation", "halted"):
+        if isinstance(answer, ViolationAnswer | HaltedAnswer):
             raise MonitorHalted(answer)
-        if isinstance(answer.get("resync"), dict):
+        if answer.resync is not None:
             raise MonitorResync(answer)
         raise MonitorError(answer)
 
-    def _resume(self, message: JsonObject) -> JsonObject:
+    def _resume(self, message: JsonObject) -> Allow:
         """Resynchronise with `current_state`, then send `message` again (once)."""
         assert self._current_state is not None
         finished = message["seq"] if message["type"] in ("after", "sync") else message["seq"] - 1
-        self._exchange({"type": "sync", "seq": finished, "state": dict(self._current_state())},
+        self._exchange({"type": "sync", "seq": finished, "state": as_json(self._current_state())},
                        resyncing=True)
         if message["type"] in ("after", "sync"):
-            return {"type": "allow", "seq": message["seq"]}  # the sync reported its outcome
+            return Allow(type="allow", seq=message["seq"])  # the sync reported its outcome
         return self._exchange(message, resyncing=True)
 
-    def before(self, action: Mapping[str, Any], state: Observation | None = None) -> int:
+    def before(self, action: Action, state: Observation | None = None) -> int:
         """Ask before running an action; returns its seq when allowed.
 
         Raises:
@@ -197,12 +218,13 @@ class MonitorClient:
             MonitorError: the message could not be checked; do not run the action.
         """
         seq = self.next_seq
-        message: JsonObject = {"type": "before", "seq": seq, "action": dict(action)}
+        wire_action = as_json(action)
+        message: JsonObject = {"type": "before", "seq": seq, "action": wire_action}
         if state is not None:
-            message["state"] = dict(state)
+            message["state"] = as_json(state)
         self._exchange(message)
         self.next_seq = seq + 1
-        self._running = (seq, dict(action))
+        self._running = (seq, wire_action)
         return seq
 
     def after(self, state: Observation | None = None) -> None:
@@ -213,11 +235,12 @@ class MonitorClient:
             MonitorError: no action is running, or the report could not be checked.
         """
         if self._running is None:
-            raise MonitorError({"type": "error", "detail": "no allowed action is running"})
+            raise MonitorError(ErrorAnswer(type="error", halted=False,
+                                           detail="no allowed action is running"))
         seq, action = self._running
         message: JsonObject = {"type": "after", "seq": seq, "action": action}
         if state is not None:
-            message["state"] = dict(state)
+            message["state"] = as_json(state)
         self._exchange(message)
         self._running = None
 
@@ -236,11 +259,11 @@ class MonitorClient:
                 last finished action).
         """
         seq = self.next_seq - 1 if seq is None else seq
-        self._exchange({"type": "sync", "seq": seq, "state": dict(state)})
+        self._exchange({"type": "sync", "seq": seq, "state": as_json(state)})
         self.next_seq = seq + 1
         self._running = None
 
-    def step(self, action: Mapping[str, Any],
+    def step(self, action: Action,
              execute: Callable[[], Observation | None] | None = None, *,
              state: Observation | None = None) -> Observation | None:
         """Check an action, run it, check the state it left: `before`, `execute()`, `after`.
@@ -262,44 +285,3 @@ class MonitorClient:
         observed = execute() if execute is not None else None
         self.after(observed)
         return observed
-
-
-class MonitorEvents:
-    """A listener on a session's violations and refusals; iterate over it for events."""
-
-    def __init__(self, base_url: str, session_id: str, *, api_key: str | None = None,
-                 timeout: float = 10.0) -> None:
-        self.url = websocket_url(base_url, f"/monitor/{session_id}/events")
-        self._api_key = api_key
-        self._timeout = timeout
-        self._socket: ClientConnection | None = None
-
-    def __enter__(self) -> MonitorEvents:
-        self._socket = _open(self.url, self._api_key, self._timeout)
-        return self
-
-    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
-                 trace: TracebackType | None) -> None:
-        if self._socket is not None:
-            self._socket.close()
-
-    def next(self, timeout: float | None = None) -> JsonObject:
-        """The next event (the first is the session's `status`).
-
-        Raises:
-            MonitorConnectionError: closed, or nothing arrived within the timeout.
-        """
-        if self._socket is None:
-            raise MonitorConnectionError("not connected: use `with MonitorEvents(...)`")
-        try:
-            event: JsonObject = json.loads(self._socket.recv(timeout=timeout or self._timeout))
-        except (ConnectionClosed, TimeoutError, OSError) as error:
-            raise MonitorConnectionError(f"event stream ended: {error}") from error
-        return event
-
-    def __iter__(self) -> Iterator[JsonObject]:
-        while True:
-            try:
-                yield self.next(timeout=None)
-            except MonitorConnectionError:
-                return

@@ -2,6 +2,7 @@
 
 SafeGateClientError
 ├── ApiError            SafeGate answered with an error status (carries the problem+json body)
+├── UnexpectedAnswer    a 2xx answer (or a monitor answer) that does not fit the wire models
 ├── SafeGateUnavailable SafeGate could not be reached (or stayed busy) through every retry
 ├── MonitorError        the monitor answered `error`: the message was not checked (not allowed)
 │   └── MonitorResync   ... because it does not follow the session's last step: resynchronise
@@ -9,13 +10,15 @@ SafeGateClientError
 └── MonitorConnectionError   the websocket could not be opened, or closed while waiting
 
 A refused action (`MonitorError`, `MonitorHalted`) means: do not run it; so does any error at
-all. No error of the SDK, nor any transport failure, is ever turned into an allowed action or an
-authorized task.
+all. No error of the SDK, nor any transport failure, nor an answer the SDK cannot read, is ever
+turned into an allowed action or an authorized task.
 """
 
 from __future__ import annotations
 
 from typing import Any
+
+from safegate_client.models.monitor import ErrorAnswer, HaltedAnswer, Violation, ViolationAnswer
 
 
 class SafeGateClientError(Exception):
@@ -31,6 +34,11 @@ class ApiError(SafeGateClientError):
         super().__init__(f"{status} {problem.get('title', '')}: {problem.get('detail', '')}")
 
 
+class UnexpectedAnswer(SafeGateClientError):
+    """An answer that is not what the wire format promises (not JSON, or not of the model's
+    shape: e.g. a decision this SDK does not know). Nothing is decided by it."""
+
+
 class SafeGateUnavailable(SafeGateClientError):
     """The request never got an answer: connection failures or timeouts on every attempt.
     Nothing was decided; the robot must not act on it."""
@@ -39,9 +47,9 @@ class SafeGateUnavailable(SafeGateClientError):
 class MonitorError(SafeGateClientError):
     """The monitor could not check a message (malformed, out of order...): not allowed."""
 
-    def __init__(self, answer: dict[str, Any]) -> None:
+    def __init__(self, answer: ErrorAnswer) -> None:
         self.answer = answer
-        super().__init__(str(answer.get("detail", "the monitor answered an error")))
+        super().__init__(answer.detail)
 
 
 class MonitorResync(MonitorError):
@@ -49,22 +57,24 @@ class MonitorResync(MonitorError):
     finished action) and `pending_seq` (an allowed action awaiting its `after`) say where the
     monitor stands: go on from there, or send your current state with `MonitorClient.sync`."""
 
-    def __init__(self, answer: dict[str, Any]) -> None:
+    def __init__(self, answer: ErrorAnswer) -> None:
         super().__init__(answer)
-        position = answer.get("resync") or {}
-        self.last_seq: int | None = position.get("last_seq")
-        self.pending_seq: int | None = position.get("pending_seq")
+        self.last_seq: int | None = answer.resync.last_seq if answer.resync else None
+        self.pending_seq: int | None = answer.resync.pending_seq if answer.resync else None
 
 
 class MonitorHalted(SafeGateClientError):
-    """The session is halted; `violation` is the violation that halted it."""
+    """The session is halted; `violation` is the violation that halted it (None only when the
+    server did not say)."""
 
-    def __init__(self, answer: dict[str, Any]) -> None:
+    def __init__(self, answer: ViolationAnswer | HaltedAnswer) -> None:
         self.answer = answer
-        self.violation: dict[str, Any] = dict(answer.get("violation") or {})
-        what = self.violation.get("condition_id", "unknown condition")
-        super().__init__(f"session halted by {self.violation.get('kind', 'a')} {what}: "
-                         f"{self.violation.get('description', '')}")
+        self.violation: Violation | None = answer.violation
+        if self.violation is None:
+            super().__init__(f"session halted: {getattr(answer, 'detail', None) or 'halted'}")
+        else:
+            super().__init__(f"session halted by {self.violation.kind} "
+                             f"{self.violation.condition_id}: {self.violation.description}")
 
 
 class MonitorConnectionError(SafeGateClientError):

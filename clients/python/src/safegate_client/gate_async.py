@@ -1,8 +1,9 @@
 """`AsyncGateClient`: `GateClient` for asyncio planners (httpx's `AsyncClient`).
 
-In, out and failures are `GateClient`'s (`app/client/gate.py`): the same methods, awaited; the
-same `RetryPolicy`; `ApiError` for an error status and `SafeGateUnavailable` when no answer came
-through any retry. No failure is ever returned as a decision.
+In, out and failures are `GateClient`'s (`safegate_client/gate.py`): the same methods, awaited,
+with the same typed answers; the same `RetryPolicy`; `ApiError` for an error status,
+`UnexpectedAnswer` for an answer not of the promised shape and `SafeGateUnavailable` when no
+answer came through any retry. No failure is ever returned as a decision.
 """
 
 from __future__ import annotations
@@ -14,17 +15,26 @@ from typing import Any
 
 import httpx
 
-from app.client.gate import (
+from safegate_client.models import (
+    ContractResponse,
+    GateResponse,
+    MonitorOpenResponse,
+    MonitorSummaryResponse,
+    VerifyResponse,
+)
+from safegate_client.retry import RetryPolicy
+from safegate_client.wire import (
     Body,
     JsonObject,
     as_json,
     auth_headers,
-    decode,
+    json_of,
     monitor_body,
+    read,
+    text_of,
     unavailable,
     verify_body,
 )
-from app.client.retry import RetryPolicy
 
 
 class AsyncGateClient:
@@ -66,45 +76,46 @@ class AsyncGateClient:
             await asyncio.sleep(self.retry.wait(attempt, outcome))
             attempt += 1
 
-    async def gate(self, request: Body, *, reference_plan: bool = False) -> JsonObject:
+    async def gate(self, request: Body, *, reference_plan: bool = False) -> GateResponse:
         """Ask whether a command may run: `POST /gate` (see `GateClient.gate`)."""
         params = {"reference_plan": "true"} if reference_plan else None
-        return decode(await self._send("POST", "/gate", json=as_json(request), params=params))
+        return read(await self._send("POST", "/gate", json=as_json(request), params=params),
+                    GateResponse)
 
-    async def answer(self, request_id: str, answers: Mapping[str, Any]) -> JsonObject:
+    async def answer(self, request_id: str, answers: Mapping[str, Any]) -> GateResponse:
         """Answer a deferred request's question: `POST /gate/{id}/answers`."""
-        return decode(await self._send("POST", f"/gate/{request_id}/answers",
-                                       json=dict(answers)))
+        return read(await self._send("POST", f"/gate/{request_id}/answers",
+                                     json=dict(answers)), GateResponse)
 
     async def decision(self, request_id: str) -> JsonObject:
         """A stored decision with the decisions that followed it: `GET /gate/{id}`."""
-        return decode(await self._send("GET", f"/gate/{request_id}"))
+        record: JsonObject = json_of(await self._send("GET", f"/gate/{request_id}"))
+        return record
 
-    async def contract(self, contract_id: str) -> JsonObject:
+    async def contract(self, contract_id: str) -> ContractResponse:
         """The Task Safety Contract: `GET /contracts/{id}`."""
-        return decode(await self._send("GET", f"/contracts/{contract_id}"))
+        return read(await self._send("GET", f"/contracts/{contract_id}"), ContractResponse)
 
     async def planner_constraints(self, contract_id: str) -> str:
         """The contract as plain constraints for a planner's prompt."""
-        response = await self._send("GET", f"/contracts/{contract_id}",
-                                    params={"format": "planner"})
-        if response.is_error:
-            decode(response)
-        return response.text
+        return text_of(await self._send("GET", f"/contracts/{contract_id}",
+                                        params={"format": "planner"}))
 
-    async def verify(self, contract_id: str, plan: Sequence[Mapping[str, Any]],
-                     initial_state: Body | None = None) -> JsonObject:
+    async def verify(self, contract_id: str, plan: Sequence[Body],
+                     initial_state: Body | None = None) -> VerifyResponse:
         """Check a plan against its contract: `POST /verify` (see `GateClient.verify`)."""
-        return decode(await self._send("POST", "/verify",
-                                       json=verify_body(contract_id, plan, initial_state)))
+        return read(await self._send("POST", "/verify",
+                                     json=verify_body(contract_id, plan, initial_state)),
+                    VerifyResponse)
 
     async def open_monitor(self, contract_id: str, initial_state: Body | None = None) -> str:
         """Open a runtime monitoring session: `POST /monitor`; returns the session id."""
-        answer = decode(await self._send("POST", "/monitor",
-                                         json=monitor_body(contract_id, initial_state)))
-        session_id: str = answer["session_id"]
-        return session_id
+        opened = read(await self._send("POST", "/monitor",
+                                       json=monitor_body(contract_id, initial_state)),
+                      MonitorOpenResponse)
+        return opened.session_id
 
-    async def monitor_summary(self, session_id: str) -> JsonObject:
+    async def monitor_summary(self, session_id: str) -> MonitorSummaryResponse:
         """The session's MonitorSummary: `GET /monitor/{id}/summary`."""
-        return decode(await self._send("GET", f"/monitor/{session_id}/summary"))
+        return read(await self._send("GET", f"/monitor/{session_id}/summary"),
+                    MonitorSummaryResponse)
