@@ -46,7 +46,8 @@ def clear_multiprocess_directory() -> None:
         os.remove(path)
 
 
-def _pid_alive(pid: int) -> bool:
+def pid_alive(pid: int) -> bool:
+    """Whether a process with this id exists (one owned by another user counts)."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -64,7 +65,7 @@ def _forget_dead_processes(directory: str) -> None:
         if tail.isdigit():
             pids.add(int(tail))
     for pid in pids:
-        if not _pid_alive(pid):
+        if not pid_alive(pid):
             multiprocess.mark_process_dead(pid, directory)  # type: ignore[no-untyped-call]
 
 

@@ -45,7 +45,7 @@ import anyio.to_thread
 from app.config import Settings
 from app.domain.errors import Busy, Unavailable
 from app.domain.gate import GatePolicy
-from app.metrics import Metrics
+from app.metrics import Metrics, pid_alive
 from app.services.container import Services, TemplateCache, build_analyzer
 from app.store import Repository, create_engine_for
 
@@ -101,13 +101,7 @@ def _started_at(pid: int) -> str | None:
 def _alive(pid: int, started: str | None) -> bool:
     if started is not None:
         return _started_at(pid) == started
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
+    return pid_alive(pid)
 
 
 def _watch_owner(owner: int) -> None:
