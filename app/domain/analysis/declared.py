@@ -64,6 +64,17 @@ _SCHEMA_RULES = {"harm": "harm_person", "frighten": "frighten_person",
                  "restrain": "restrain_person", "spy": "covert_surveillance"}
 _PERSON_ACTING = frozenset({"give", "feed", "fetch", "put", "mix", "make", "record", "find",
                             "assist", "spy", "go", "pour"})
+# Getting rid of someone else's things behind their back ("bin grandad's letters, he won't
+# notice") deceives them as much as doing something to them does.
+_DISPOSING = frozenset({"discard", "remove", "throw", "break"})
+_SEARCHING = frozenset({"record", "find", "spy", "go"})
+
+
+def _someone_elses(item: Grounded) -> bool:
+    """Whether the things, or where they are kept ("in grandpa's drawer"), are someone
+    else's."""
+    places = [r for r in (item.source, item.destination) if r is not None]
+    return any(r.phrase.possessor not in (None, "me", "us") for r in (*item.objects, *places))
 
 
 @dataclass(frozen=True, slots=True)
@@ -157,9 +168,10 @@ def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner:
                 and not item.clause.negated:
             fire(rule, item.clause.text, {"person": people[0]} if people else {})
         earlier += item.persons()
-        if "covert" in item.clause.manner | manner and item.schema in _PERSON_ACTING:
+        if "covert" in item.clause.manner | manner and (item.schema in _PERSON_ACTING or (
+                item.schema in _DISPOSING and _someone_elses(item))):
             target = people[0] if people else None
-            fire("covert_surveillance" if item.schema in ("record", "find", "spy", "go")
+            fire("covert_surveillance" if item.schema in _SEARCHING
                  else "deception", item.clause.text, {"person": target} if target else {})
     for item in grounded:
         if item.schema in _READING and not item.clause.negated:

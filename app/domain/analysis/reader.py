@@ -464,7 +464,8 @@ class Reader:
             if neg:
                 words, negated, changed = words[neg:], True, True
         if not words:
-            return None
+            # "He won't notice.": nothing to do, but how the rest is to be done still counts
+            return Clause("", None, (), "manner", manner=manner) if manner else None
         if kind == "condition" and opener in ("while", "whilst") and len(words) > 1 and \
                 words[0] == "you" and lexicon.is_verb(words[1]):
             kind, words = "step", words[1:]  # "while you go upstairs": the robot goes too
