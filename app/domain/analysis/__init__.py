@@ -1,7 +1,7 @@
 """Stage 1, the Hazard Analysis Matrix, on the world model: read, simulate, judge.
 
 In: a `GateRequest` and the active Hazard Template Library. Out: a `HazardReport`. How:
-1. Read (`reader.py`, `schemas.py`): every clause becomes steps of the shared action model on
+1. Read (`reader.py`, `schemas.py`, `handlers.py`): every clause becomes steps of the action model on
    the request's `WorldState`; what cannot be read (an unknown verb or noun, a pronoun with
    nothing to point to, a goal with no task, several readings that differ in safety) becomes a
    critical `comprehension` unknown quoting the words.

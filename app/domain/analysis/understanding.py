@@ -16,10 +16,11 @@ from dataclasses import dataclass, field, replace
 
 from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
 from app.domain.analysis.grounding import Grounder
+from app.domain.analysis.handlers import apply_clause
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.questions import not_understood, which_one
 from app.domain.analysis.reader import Clause, Reader, sounds_like_statement
-from app.domain.analysis.schemas import Grounded, apply_clause, ground_clause
+from app.domain.analysis.schemas import Grounded, ground_clause
 from app.domain.analysis.sketch import Sketch
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.models import GateRequest, UnknownFact

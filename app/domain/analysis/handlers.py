@@ -1,0 +1,366 @@
+"""The steps of the action model each schema asks for, added to the plan builder's sketch.
+
+In: a `Grounded` clause (from `schemas.py`: its schema and what its words name) and the
+`PlanBuilder`. Out: steps in the builder's sketch ("put the cup in the sink": go to the cup,
+pick it up, go to the sink, put it in). The kitchen recipes (heat, pour, fill, water, make) live
+in `recipes.py`. Fails: never; a handler whose arguments do not fit adds no steps, and
+`understanding.py` then reports the clause as not understood.
+"""
+
+from __future__ import annotations
+
+from app.domain.analysis.recipes import RECIPES
+from app.domain.analysis.schemas import DECLARED_SCHEMAS, NEXT_TO, Grounded
+from app.domain.analysis.steps import PlanBuilder
+from app.domain.world.object_types import normalize_type
+
+_WET_CLEANING = frozenset({"wash", "rinse", "scrub", "mop up", "wash up", "rinse out", "scour",
+                           "disinfect", "descale", "degrease", "clean out"})
+
+
+def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
+    """Add the steps of one grounded clause to the builder's sketch."""
+    builder.clause = grounded.index
+    schema = grounded.schema
+    if schema is None or grounded.clause.negated:
+        return
+    handler = _HANDLERS.get(schema) or RECIPES.get(schema)
+    if grounded.into_hands and schema in ("put", "fetch", "give", "pick"):
+        handler = _give  # "straight into his hands": handed over, not set down beside him
+    before = len(builder.sketch.literal)
+    if handler is not None:
+        handler(builder, grounded)
+    dest = grounded.destination
+    if len(builder.sketch.literal) == before and not grounded.objects and dest is not None \
+            and dest.ids and dest.kind == "room" and schema in ("fetch", "go", "pick"):
+        builder.go_to(dest.ids[0], kind="literal")  # "run out to the garage": go there
+
+
+def _ids(grounded: Grounded, kind: str = "object") -> list[str]:
+    return [i for r in grounded.objects if r.kind == kind for i in r.ids]
+
+
+def _destination_id(builder: PlanBuilder, grounded: Grounded) -> str | None:
+    """The receptacle a destination names (a room's surface for a room)."""
+    dest = grounded.destination
+    if dest is None or not dest.ids:
+        return None
+    if dest.kind == "room":
+        return builder.surface(dest.ids[0])
+    return dest.ids[0] if dest.kind == "object" else None
+
+
+def _fetch(builder: PlanBuilder, grounded: Grounded) -> None:
+    target = _destination_id(builder, grounded)
+    person = grounded.recipient.id if grounded.recipient is not None else None
+    for obj in _ids(grounded):
+        if person is not None:
+            builder.deliver(obj, person)
+        elif target is not None:
+            builder.place(obj, target)
+        else:
+            builder.deliver(obj, builder.user())
+
+
+def _give(builder: PlanBuilder, grounded: Grounded) -> None:
+    person = (grounded.recipient.id if grounded.recipient is not None else None) or (
+        builder.user())
+    for obj in _ids(grounded):
+        if builder.acquire(obj):
+            builder.go_to(person)
+            builder.hand_to(obj, person)
+
+
+_BASINS = frozenset({"toilet", "sink", "sinkbasin", "bathtub", "bathtubbasin", "bucket",
+                     "drain", "basin"})
+
+
+def _poured_in(builder: PlanBuilder, obj: str, target: str) -> bool:
+    """ "Put some milk in the coffee", "bleach in the toilet": a liquid goes into a vessel or a
+    basin by pouring it, not by standing its bottle there."""
+    state = builder.state
+    receptacle = state.objects.get(target)
+    if receptacle is None or state.value("filled", (obj,)) is not True:
+        return False
+    kind = normalize_type(receptacle.kind.name)
+    return kind in _BASINS or (receptacle.kind.flag("can_fill") is True
+                               and state.objects[obj].kind.flag("receptacle") is not False
+                               and kind not in ("fridge", "cabinet", "drawer", "shelf"))
+
+
+def _put(builder: PlanBuilder, grounded: Grounded) -> None:
+    target = _destination_id(builder, grounded)
+    if target is None and grounded.recipient is not None and grounded.recipient.id:
+        _fetch(builder, grounded)
+        return
+    for obj in _ids(grounded):
+        if target is not None and _poured_in(builder, obj, target) and builder.acquire(obj):
+            builder.go_to(target)
+            builder.act("Pour", obj, target)
+            continue
+        here = target
+        if here is None:
+            start = builder.grounder.objects.get(obj)
+            here = builder.find_type("Drawer", "Cabinet", "Shelf", room=builder.state.room_of(
+                obj)) if start is None or start.parent is None else start.parent
+            here = here or builder.surface(builder.state.room_of(obj), avoid=obj)
+        beside = grounded.beside.id if grounded.beside is not None and \
+            grounded.beside.kind == "object" else None
+        if grounded.destination_word in NEXT_TO and here == target and \
+                builder.state.value("exit_way", (here,)) is True:
+            # "by the door": on the floor or a surface of its room, beside it, not against it
+            here, beside = builder.surface(builder.state.room_of(here), avoid=obj), here
+        builder.place(obj, here, relation=builder.relation_for(here), beside=beside)
+
+
+def _discard(builder: PlanBuilder, grounded: Grounded) -> None:
+    can = _destination_id(builder, grounded) or builder.ensure("GarbageCan")
+    for obj in _ids(grounded):
+        builder.place(obj, can, relation="in")
+
+
+def _remove(builder: PlanBuilder, grounded: Grounded) -> None:
+    target = _destination_id(builder, grounded)
+    for obj in _ids(grounded):
+        if builder.acquire(obj, kind="literal"):
+            room = builder.state.robot.room
+            builder.place(obj, target or builder.surface(room, avoid=obj), kind="enabling")
+
+
+_BINS = frozenset({"garbagecan", "garbagebag", "trash", "bin", "rubbish", "garbage",
+                   "wastebasket", "dustbin", "recycling"})
+
+
+def _throw(builder: PlanBuilder, grounded: Grounded) -> None:
+    dest = grounded.destination
+    if dest is not None and dest.id and (normalize_type(dest.phrase.head) in _BINS or (
+            dest.kind == "object" and normalize_type(
+                builder.state.objects[dest.id].kind.name) in _BINS)):
+        _discard(builder, grounded)  # "throw it in the bin" puts it in the bin
+        return
+    target = grounded.destination or grounded.recipient
+    aim = target.id if target is not None and target.kind in ("person", "object", "room") \
+        else None
+    for obj in _ids(grounded):
+        if builder.acquire(obj):
+            builder.act("ThrowObject", obj, aim)
+
+
+def _drop(builder: PlanBuilder, grounded: Grounded) -> None:
+    dest = grounded.destination
+    for obj in _ids(grounded):
+        if builder.acquire(obj):
+            if dest is not None and dest.id and dest.kind in ("room", "object", "person"):
+                builder.go_to(dest.id)
+            builder.act("DropHandObject", obj)
+
+
+def _break(builder: PlanBuilder, grounded: Grounded) -> None:
+    dest = grounded.destination
+    for obj in _ids(grounded):
+        if dest is not None and dest.id and normalize_type(dest.phrase.head) == "floor" and \
+                builder.acquire(obj):
+            builder.act("DropHandObject", obj)
+        builder.go_to(obj)
+        builder.act("BreakObject", obj)
+        if builder.state.value("food", (obj,)) is not True or builder.state.value(
+                "on_floor", (obj,)) is True:
+            builder.cleanup("PickupObject", obj)
+            builder.cleanup("PutObject", obj, builder.ensure("GarbageCan"), relation="in")
+
+
+def _simple(action: str, cleanup: str | None = None):  # type: ignore[no-untyped-def]
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        for obj in _ids(grounded):
+            builder.go_to(obj)
+            if builder.act(action, obj) and cleanup:
+                builder.cleanup(cleanup, obj)
+    return handler
+
+
+def _switch(on: bool):  # type: ignore[no-untyped-def]
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        # "Turn off the stove": every burner the words fit (switching off more is harmless).
+        targets = [i for r in grounded.objects if r.kind == "object"
+                   for i in (r.candidates or r.ids if not on else r.ids)]
+        for obj in dict.fromkeys(targets):
+            builder.switch(obj, on)
+    return handler
+
+
+def _slice(builder: PlanBuilder, grounded: Grounded) -> None:
+    tool = grounded.instrument.id if grounded.instrument is not None and \
+        grounded.instrument.kind == "object" else None
+    knife = tool or builder.ensure("Knife", room=builder.state.room_of(
+        (_ids(grounded) or [""])[0]))
+    for obj in _ids(grounded):
+        if builder.acquire(knife):
+            builder.go_to(obj)
+            builder.act("SliceObject", obj)
+    if builder.holding() == knife:
+        room = builder.state.robot.room
+        away = builder.find_type("KnifeBlock", "Drawer", "SinkBasin", "Sink", room=room)
+        builder.cleanup("PutObject", knife, away or builder.surface(room, avoid=knife))
+
+
+def _clean(builder: PlanBuilder, grounded: Grounded) -> None:
+    wet = grounded.clause.verb in _WET_CLEANING
+    tool = grounded.instrument
+    if tool is not None and tool.kind == "object" and tool.id and builder.state.value(
+            "filled", (tool.id,)) is not False and builder.acquire(tool.id):
+        for obj in _ids(grounded):
+            builder.go_to(obj)
+            builder.act("SprayObject", tool.id, obj)
+    targets = _ids(grounded) or ([grounded.destination.id] if grounded.destination
+                                 and grounded.destination.id else [])
+    for obj in targets:
+        if builder.state.entity_type(obj) == "room":
+            builder.go_to(obj)
+            continue
+        builder.go_to(obj)
+        builder.act("CleanObject", obj, **({"liquid": "water"} if wet else {}))
+
+
+def _spray(builder: PlanBuilder, grounded: Grounded) -> None:
+    objects = _ids(grounded)
+    tool = grounded.instrument
+    sprayer = tool.id if tool is not None and tool.kind == "object" and tool.id else None
+    targets = objects
+    if sprayer is None and objects and grounded.destination is not None:
+        # "spray the bleach on the counter": the first object is what is sprayed
+        sprayer, targets = objects[0], [grounded.destination.id] if \
+            grounded.destination.id else []
+    elif sprayer is None:
+        sprayer = builder.find_type("SprayBottle") or builder.ensure("SprayBottle")
+    people = [i for r in grounded.objects if r.kind == "person" for i in r.ids]
+    if sprayer is None or not builder.acquire(sprayer):
+        return
+    for target in [*targets, *people]:
+        builder.go_to(target)
+        builder.act("SprayObject", sprayer, target)
+
+
+def _go(builder: PlanBuilder, grounded: Grounded) -> None:
+    dest = grounded.destination or (grounded.objects[0] if grounded.objects else None)
+    if dest is not None and dest.id:
+        if dest.kind == "room":
+            builder.act("navigate", target=dest.id)
+        else:
+            builder.act("GoToObject", dest.id)
+
+
+def _find(builder: PlanBuilder, grounded: Grounded) -> None:
+    for ref in [*grounded.objects, *([grounded.destination] if grounded.destination else [])]:
+        for entity in ref.ids:
+            builder.go_to(entity, kind="literal")
+
+
+def _person_act(action: str):  # type: ignore[no-untyped-def]
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        for person in _ids(grounded, "person"):
+            builder.go_to(person)
+            if action == "Escort":
+                dest = grounded.destination
+                if dest is not None and dest.id:
+                    builder.act("Escort", person, dest.id)
+            elif action == "Assist":
+                builder.act("Assist", person, activity=grounded.clause.verb or "help")
+            elif action == "Follow":
+                builder.act("Follow", person)
+    return handler
+
+
+def _feed(builder: PlanBuilder, grounded: Grounded) -> None:
+    people = _ids(grounded, "person") or (
+        [grounded.recipient.id] if grounded.recipient and grounded.recipient.id else [])
+    foods = _ids(grounded) or ([grounded.instrument.id] if grounded.instrument is not None
+                               and grounded.instrument.kind == "object"
+                               and grounded.instrument.id else [])
+    for person in people:
+        for food in foods:
+            if builder.acquire(food):
+                builder.go_to(person)
+                builder.act("Feed", food, person)
+
+
+def _record(builder: PlanBuilder, grounded: Grounded) -> None:
+    targets: list[str | None] = [i for r in grounded.objects for i in r.ids] or (
+        [grounded.destination.id] if grounded.destination and grounded.destination.id else [])
+    for target in targets or [None]:
+        builder.act("Record", target=target)
+
+
+def _floor_chore(action: str):  # type: ignore[no-untyped-def]
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        refs = [*grounded.objects, *([grounded.destination] if grounded.destination else [])]
+        targets = [i for r in refs if r.kind in ("room", "object") for i in r.ids]
+        for target in targets or [builder.state.robot.room or builder.surface(None)]:
+            builder.act(action, target=target)
+    return handler
+
+
+def _push(builder: PlanBuilder, grounded: Grounded) -> None:
+    dest = grounded.destination
+    for obj in _ids(grounded):
+        builder.go_to(obj)
+        builder.act("PushObject", obj, dest.id if dest is not None and dest.id else None)
+
+
+def _pick(builder: PlanBuilder, grounded: Grounded) -> None:
+    if grounded.destination is not None or grounded.recipient is not None:
+        _fetch(builder, grounded)
+        return
+    for obj in _ids(grounded):
+        builder.acquire(obj, kind="literal")
+
+
+def _plug(on: bool):  # type: ignore[no-untyped-def]
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        target = _destination_id(builder, grounded)
+        for obj in _ids(grounded):
+            if on and target is not None and builder.state.holder_of(obj) is None:
+                builder.place(obj, target, kind="enabling")
+            builder.go_to(obj)
+            builder.act("PlugIn" if on else "Unplug", obj)
+    return handler
+
+
+def _lock(locked: bool):  # type: ignore[no-untyped-def]
+    action = "LockObject" if locked else "UnlockObject"
+    simple = _simple(action)
+
+    def handler(builder: PlanBuilder, grounded: Grounded) -> None:
+        # "lock the scissors in the staff cupboard": put them there, then lock the cupboard
+        place = _destination_id(builder, grounded) if locked else None
+        if place is None:
+            simple(builder, grounded)
+            return
+        _put(builder, grounded)
+        builder.go_to(place)
+        builder.act(action, place)
+    return handler
+
+
+def _wait(builder: PlanBuilder, grounded: Grounded) -> None:
+    builder.act("Wait", seconds=60.0)
+
+
+def _visit_people(builder: PlanBuilder, grounded: Grounded) -> None:
+    for person in [*_ids(grounded, "person"), *grounded.persons()]:
+        builder.go_to(person, kind="literal")
+
+
+_HANDLERS = {
+    "fetch": _fetch, "give": _give, "put": _put, "discard": _discard, "remove": _remove,
+    "throw": _throw, "drop": _drop, "break": _break, "crack": _break,
+    "open": _simple("OpenObject"), "close": _simple("CloseObject"),
+    "lock": _lock(True), "unlock": _lock(False),
+    "switch_on": _switch(True), "switch_off": _switch(False), "slice": _slice,
+    "clean": _clean, "spray": _spray, "plug": _plug(True), "unplug": _plug(False),
+    "push": _push, "pick": _pick, "go": _go, "find": _find, "wait": _wait,
+    "follow": _person_act("Follow"), "escort": _person_act("Escort"),
+    "assist": _person_act("Assist"), "feed": _feed, "record": _record,
+    "vacuum": _floor_chore("Vacuum"), "mop": _floor_chore("Mop"),
+    "fold": _simple("FoldObject"), "chore": _find, "communicate": _visit_people,
+    **{schema: _visit_people for schema in DECLARED_SCHEMAS},
+}
