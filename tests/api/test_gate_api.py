@@ -165,6 +165,8 @@ class TestAnswers:
 class TestOverRealHttp:
     def test_gate_over_loopback(self, live_server: Callable[..., object]) -> None:
         server = live_server()
-        response = httpx.post(server.base_url + "/gate", json=SPEC_REQUEST)  # type: ignore[attr-defined]
+        # The first request warms the analysis pool (lexicon, library): generous on a busy host.
+        response = httpx.post(server.base_url + "/gate", json=SPEC_REQUEST,  # type: ignore[attr-defined]
+                              timeout=60)
         assert response.status_code == 200
         assert response.json()["decision"] != "authorize"

@@ -159,7 +159,7 @@ class TestInvalidInput:
 class TestOverRealHttp:
     def test_verify_over_loopback(self, live_server: Callable[..., Any]) -> None:
         server = live_server()
-        gate = httpx.post(server.base_url + "/gate", json=KNIFE_REQUEST).json()
+        gate = httpx.post(server.base_url + "/gate", json=KNIFE_REQUEST, timeout=60).json()
         response = httpx.post(server.base_url + "/verify",
                               json={"contract_id": gate["contract_id"], "plan": THROWING_PLAN})
         assert response.status_code == 200
