@@ -40,6 +40,8 @@ class ScriptedServer:
     script: deque[Scripted] = field(default_factory=deque)
     requests: list[dict[str, Any]] = field(default_factory=list)
     responder: Callable[[dict[str, Any]], Scripted] | None = None
+    prepare: Callable[[object], object] | None = None
+    """Applied to each payload `answer_json` serializes (the LLM tests complete open cells)."""
 
     def queue(self, *replies: Scripted) -> None:
         """Append replies to the script."""
@@ -47,7 +49,8 @@ class ScriptedServer:
 
     def answer_json(self, *payloads: object) -> None:
         """Append replies whose content is each payload serialized as JSON."""
-        self.queue(*(Scripted(content=json.dumps(p)) for p in payloads))
+        prepare = self.prepare or (lambda payload: payload)
+        self.queue(*(Scripted(content=json.dumps(prepare(p))) for p in payloads))
 
 
 def _completion(content: str, finish_reason: str) -> dict[str, Any]:
