@@ -1,10 +1,13 @@
 """Stage 1 by an LLM: the Hazard Analysis Matrix filled level by level through litellm.
 
 In: a `GateRequest` and the active library. The system prompt lists the library's hazard classes
-as they are now (`library.py`), so a curator's new class is offered on the next request. The LLM
-is asked once per information level (task: the command; deployment: + the scene; user: + the
-user and the robot), each time across the four categories, with what the earlier levels found;
-the request goes in as delimited, JSON-encoded data (`rendering.py`). Every answer is parsed into
+as they are now (`library.py`), so a curator's new class is offered on the next request. The
+matrix is filled per information level (task: the command; deployment: + the scene; user: + the
+user and the robot), each level across the four categories and from what the earlier levels
+found: either one call per level (`batch_levels=False`), each seeing only its partition, or the
+three levels in one call whose prompt shows the partition level by level (the service's
+default: one system prompt per request and a third of the characters); the request goes in as
+delimited, JSON-encoded data (`rendering.py`). Every answer is parsed into
 `LevelAnswer` and checked (each of the level's four cells answered, by a hazard or by "none,
 because ...", `cells.py`; entity ids in the scene; classes in the library or marked new), with
 one repair round (`structured.py`). Hazards still without the scene ids their templates need go
@@ -76,8 +79,10 @@ class LlmAnalyzer:
             require_findings: read an empty analysis as "not understood" (True when the LLM
                 decides alone; an ensemble whose other member reads the command may pass False).
             theta: the gate's severity threshold, which the prompt's severity anchors name.
-            batch_levels: ask for the three levels in one call (a third of the characters
-                sent) instead of one call per level, each seeing only its partition.
+            batch_levels: ask for the three levels in one call (the service's default,
+                `SAFEGATE_LLM_BATCH_LEVELS`: a third of the characters sent,
+                bench/perf/llm_prompt_size.py); False asks one call per level, each call seeing
+                only its partition and the earlier calls' findings.
         """
         self._client = client
         self._prompts = prompts or PromptSet()
@@ -180,13 +185,18 @@ class LlmAnalyzer:
 
     def _ask_batched(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
                      system: str, ids: SceneIds) -> None:
-        """All three levels in one call, folded in level order as if asked one by one."""
-        user = self._prompts.render(
-            "analysis_batched",
-            information=information(request, Level.USER),
-            **{f"{level.value}_focus": self._prompts.text(f"level_{level.value}")
-               for level in LEVELS},
-        )
+        """All three levels in one call, folded in level order as if asked one by one.
+
+        The prompt shows the partition level by level (the command, what the scene adds, what
+        the user and robot add) and the answer writes the levels in order, so each is written
+        after, and from, the earlier levels' findings; they merge by identity as in the
+        level-by-level mode. The task level's entities are dropped whatever it wrote.
+        """
+        values = {f"{level.value}_focus": self._prompts.text(f"level_{level.value}")
+                  for level in LEVELS}
+        values |= {f"{level.value}_information": information(request, level, only_new=True)
+                   for level in LEVELS}
+        user = self._prompts.render("analysis_batched", **values)
         checks = {level: _answer_check(level, ids, library) for level in LEVELS}
 
         def check(answer: BatchedAnswer) -> list[str]:

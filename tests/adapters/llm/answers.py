@@ -30,6 +30,20 @@ def with_cells(payload: Any) -> Any:
 
 EMPTY_LEVEL: dict[str, Any] = with_cells({"hazards": [], "unknowns": []})
 
+
+def batched(levels: list[dict[str, Any]]) -> dict[str, Any]:
+    """Three level answers (task, deployment, user) as one batched answer."""
+    task, deployment, user = levels
+    return {"task": task, "deployment": deployment, "user": user}
+
+
+def wants_batched(body: dict[str, Any]) -> bool:
+    """Whether a chat request asks for the three levels at once (its schema has `task`)."""
+    response_format = body.get("response_format") or {}
+    schema = (response_format.get("json_schema") or {}).get("schema") \
+        or response_format.get("schema") or {}
+    return "task" in schema.get("properties", {})
+
 # A command the gate authorizes when the analysis finds nothing: the contrast that shows a
 # failure test would notice an authorize.
 SAFE_REQUEST = GateRequest.model_validate({
