@@ -56,7 +56,9 @@ client-models: $(STAMP)
 
 ## The paper's evaluation: every method on the benchmark; report, JSON and plots from scratch
 ## in bench/reports/benchmark/ (embedded analyzer, no network; the LLM classifier runs only
-## when SAFEGATE_LLM_MODEL is set). `python -m bench` runs from this checkout, not from the wheel;
+## when SAFEGATE_LLM_MODEL is set). `llm (scripted)` and `ensemble (scripted)` run SafeGate's
+## LLM path on every case against a scripted server on 127.0.0.1 (bench/scripted_analyst.py
+## answers from the prompt's words by a fixed rule): a plumbing check, not a model's score. `python -m bench` runs from this checkout, not from the wheel;
 ## its scipy and matplotlib come with the `bench` extra, which `.[dev]` includes.
 bench: $(STAMP)
 	$(BIN)/python -m bench run bench/cases/benchmark.jsonl --name benchmark

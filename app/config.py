@@ -56,10 +56,12 @@ class Settings(BaseSettings):
     llm_api_base: str | None = None
     llm_api_key: str | None = None
     llm_timeout: float = Field(default=20.0, gt=0)
-    # One LLM call per request for the three matrix levels instead of one per level: about a
-    # third of the characters sent (bench/perf/llm_prompt_size.py), the levels kept apart by
-    # instruction rather than by what each call sees.
-    llm_batch_levels: bool = False
+    # One LLM call per request for the three matrix levels (the default) instead of one per
+    # level: the system prompt sent once and about a third of the characters
+    # (bench/perf/llm_prompt_size.py). The prompt shows the partition level by level and the
+    # answer writes the levels in order, each from the earlier ones' findings; they merge by
+    # identity as when asked one by one. False: one call per level, each seeing only its part.
+    llm_batch_levels: bool = True
 
     max_body_bytes: int = Field(default=1_000_000, ge=1024)
     # Input limits (422 naming the field when exceeded; see app/api/limits.py). Each may be

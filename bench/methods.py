@@ -10,6 +10,10 @@ In: a method name from the command line. Out: a `Method` (see `bench/method.py`)
   "LLM call failed" so such cases can be counted.
 - `selp-style`, `roboguard-style`: our re-implementations of the published baselines
   (`bench/baselines/`).
+- `llm-scripted`, `ensemble-scripted` (reported as `llm (scripted)`, `ensemble (scripted)`):
+  SafeGate with the `llm` or `ensemble` analyzer whose "model" is a scripted server on loopback
+  (`bench/scripted_llm.py`) answering by a fixed rule from the prompt's words
+  (`bench/scripted_analyst.py`): the LLM path checked end to end, not a model's score.
 Fails: `BenchmarkError` on an unknown method name. A method that cannot run reports why through
 `unavailable_reason()`; it is never silently replaced by another.
 """
@@ -22,6 +26,8 @@ from collections.abc import Iterator
 from contextlib import AbstractContextManager, contextmanager
 from typing import cast
 
+from fastapi.testclient import TestClient
+
 from app.domain.models import GateRequest
 from bench.baselines.roboguard_style import RoboGuardStyle
 from bench.baselines.selp_style import SelpStyle
@@ -29,7 +35,22 @@ from bench.case import BenchmarkError, Decision
 from bench.gate_runner import embedded_client
 from bench.method import Decide, Method, Verdict
 
-METHOD_NAMES: tuple[str, ...] = ("safegate", "llm-classifier", "selp-style", "roboguard-style")
+METHOD_NAMES: tuple[str, ...] = ("safegate", "llm-classifier", "selp-style", "roboguard-style",
+                                 "llm-scripted", "ensemble-scripted")
+SCRIPTED_MODEL = "openai/scripted-analyst"
+
+
+def _gate_decider(client: TestClient) -> Decide:
+    def decide(request: GateRequest) -> Verdict:
+        response = client.post(
+            "/gate", json=request.model_dump(mode="json", by_alias=True, exclude_none=True),
+        )
+        response.raise_for_status()
+        body = response.json()
+        return Verdict(decision=cast(Decision, body["decision"]),
+                       reason=f"{body.get('rule', '?')}: {body.get('reason', '')}")
+
+    return decide
 
 
 class SafeGateMethod:
@@ -60,20 +81,56 @@ class SafeGateMethod:
     @contextmanager
     def _deciding(self) -> Iterator[Decide]:
         with embedded_client(analyzer=self.analyzer) as client:
+            yield _gate_decider(client)
 
-            def decide(request: GateRequest) -> Verdict:
-                response = client.post(
-                    "/gate",
-                    json=request.model_dump(mode="json", by_alias=True, exclude_none=True),
-                )
-                response.raise_for_status()
-                body = response.json()
-                return Verdict(
-                    decision=cast(Decision, body["decision"]),
-                    reason=f"{body.get('rule', '?')}: {body.get('reason', '')}",
-                )
 
-            yield decide
+class ScriptedLlmMethod:
+    """SafeGate's LLM path (`llm` or `ensemble` analyzer) against a scripted server, not a model.
+
+    The server is `bench/scripted_llm.py` on 127.0.0.1 and its answers come from
+    `bench/scripted_analyst.py`, which reads only the prompt: a plumbing check, not a score.
+    """
+
+    def __init__(self, analyzer: str) -> None:
+        """Args: analyzer: `llm` or `ensemble`, the `SAFEGATE_ANALYZER` of the embedded app."""
+        self.analyzer = analyzer
+        self.name = f"{analyzer} (scripted)"
+
+    @property
+    def description(self) -> str:
+        """What is evaluated, saying plainly that no model was involved."""
+        member = "alone" if self.analyzer == "llm" else "with the symbolic analyzer (union)"
+        return (
+            f"SafeGate's LLM analyzer {member}, POST /gate of the embedded app, talking through "
+            "litellm to a scripted OpenAI-compatible server on 127.0.0.1, NOT a real model: "
+            "the server answers from the prompt's words by a fixed rule "
+            "(bench/scripted_analyst.py), so this checks the LLM path end to end and is not a "
+            "model score."
+        )
+
+    def unavailable_reason(self) -> str | None:
+        """Why it cannot run: litellm (the `llm` extra) is not installed."""
+        if importlib.util.find_spec("litellm") is None:
+            return "litellm is not installed (pip install -e '.[llm]')"
+        return None
+
+    def open(self) -> AbstractContextManager[Decide]:
+        """A scripted server and an embedded app whose LLM is that server."""
+        return self._deciding()
+
+    @contextmanager
+    def _deciding(self) -> Iterator[Decide]:
+        from bench.scripted_analyst import answer
+        from bench.scripted_llm import scripted_server
+
+        # litellm would otherwise fetch its model cost map from the internet on import.
+        os.environ.setdefault("LITELLM_LOCAL_MODEL_COST_MAP", "True")
+        with scripted_server() as server:
+            server.responder = answer
+            with embedded_client(analyzer=self.analyzer, llm_model=SCRIPTED_MODEL,
+                                 llm_api_base=server.base_url, llm_api_key="sk-scripted",
+                                 llm_timeout=30.0) as client:
+                yield _gate_decider(client)
 
 
 class LLMClassifierMethod:
@@ -136,4 +193,8 @@ def build_method(name: str, *, safegate_analyzer: str = "symbolic") -> Method:
         return SelpStyle.from_data()
     if name == "roboguard-style":
         return RoboGuardStyle.from_data()
+    if name in ("llm-scripted", "llm (scripted)"):
+        return ScriptedLlmMethod("llm")
+    if name in ("ensemble-scripted", "ensemble (scripted)"):
+        return ScriptedLlmMethod("ensemble")
     raise BenchmarkError(f"unknown method {name!r}; expected one of {METHOD_NAMES}")

@@ -1,8 +1,9 @@
 """The Markdown report of an evaluation: the paper's tables for every method, side by side.
 
 In: an `Evaluation`, the benchmark file names and the plot file names (relative to the report).
-Out: Markdown text: methods and their status, the main rates table, confusion and ambiguous
-rows, decisions by label, McNemar's tests, the deferral analysis, breakdowns by domain,
+Out: Markdown text: methods and their status (with `SCRIPTED_NOTE` when a `(scripted)` method
+ran: its model was a scripted server, not a real model), the main rates table, confusion and
+ambiguous rows, decisions by label, McNemar's tests, the deferral analysis, breakdowns by domain,
 complexity, category and reasoning kind, and the plots. Numbers come only from the evaluation.
 Fails: never on a well-formed evaluation; a rate with no cases prints as "n/a".
 """
@@ -14,6 +15,16 @@ from collections.abc import Sequence
 from bench.evaluation import REFERENCE, Evaluation
 from bench.metrics import GroupMetrics
 from bench.score import GROUP_KEYS
+
+SCRIPTED_NOTE = (
+    "The methods marked `(scripted)` ran SafeGate's LLM analyzer through litellm and real HTTP "
+    "against a scripted OpenAI-compatible server on 127.0.0.1: the model was a scripted "
+    "server, not a real model. It answers every prompt by a fixed rule from the prompt's words "
+    "(the library class whose name shares most words with the command, rated moderate and "
+    "preventable, tied to the objects and person the scene lists, no unknowns; "
+    "`bench/scripted_analyst.py`) and never sees a label. Their rows check that the LLM path "
+    "runs end to end on every case; they are not a score of any model."
+)
 
 
 def _pct(value: float | None) -> str:
@@ -136,6 +147,8 @@ def render_markdown(evaluation: Evaluation, files: Sequence[str], plots: Sequenc
         status = f"{len(run.verdicts)} cases in {run.seconds:.1f} s" if run.ran else \
             f"**not run ({run.skipped})**"
         lines.append(f"- `{run.name}` — {run.description} {status}.")
+    if any(run.name.endswith("(scripted)") for run in evaluation.runs):
+        lines += ["", SCRIPTED_NOTE]
     lines += [
         "", "The baselines are our re-implementations from the published descriptions, without "
         "an LLM, with their own rule sets under `bench/baselines/data/`; they do not use "

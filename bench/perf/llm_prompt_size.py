@@ -5,7 +5,8 @@ by `LlmAnalyzer` with an in-process recording client (no network, no model) that
 call with the same small, valid level answer, so only what SafeGate sends differs between code
 versions. Out: a Rich table of characters per request (messages alone, and with the JSON schema
 sent in `response_format`) and calls per request: median, p90, mean, max; for each mode the
-code has (level by level, and batched where `LlmAnalyzer` takes `batch_levels`).
+code has (level by level, and batched where `LlmAnalyzer` takes `batch_levels`), the mode a
+service runs by default (`SAFEGATE_LLM_BATCH_LEVELS` unset) marked "(default)".
 Run it on two checkouts to compare them, e.g. main against this branch:
     PYTHONPATH=<checkout> .venv/bin/python bench/perf/llm_prompt_size.py
 """
@@ -25,14 +26,19 @@ from rich.table import Table
 
 import app
 from app.adapters.llm import ChatAnswer, LlmAnalyzer
+from app.config import Settings
 from app.domain.models import GateRequest
 from app.store.seed import load_library
 
 ROOT = Path(app.__file__).resolve().parents[1]
 CASES = ROOT / "bench" / "cases" / "benchmark.jsonl"
-# One non-critical unknown per level: valid for every version, and no extra round is asked for.
+# One non-critical unknown per level and its four cells answered "none, because ...": valid for
+# every version, and no extra round (repair or entities) is asked for.
 LEVEL = {"hazards": [], "unknowns": [{"attribute": "age_group", "description": "age unknown",
-                                       "critical": False, "why": "may matter"}]}
+                                       "critical": False, "why": "may matter"}],
+         "none_because": {c: "none, because the recording client reports none"
+                          for c in ("physical", "psychological", "operational",
+                                    "consequential")}}
 
 
 class RecordingClient:
@@ -71,7 +77,10 @@ def main() -> int:
         table.add_column(column, justify="left" if column in ("mode", "per request") else "right")
     modes: dict[str, dict[str, Any]] = {"level by level": {}}
     if "batch_levels" in inspect.signature(LlmAnalyzer).parameters:
-        modes["batched"] = {"batch_levels": True}
+        modes = {"level by level": {"batch_levels": False}, "batched": {"batch_levels": True}}
+    # The mode a service runs when SAFEGATE_LLM_BATCH_LEVELS is not set.
+    default = "batched" if getattr(Settings(), "llm_batch_levels", False) else "level by level"
+    modes = {f"{m} (default)" if m == default else m: o for m, o in modes.items()}
     for mode, options in modes.items():
         text: list[float] = []
         with_schema: list[float] = []
@@ -85,7 +94,7 @@ def main() -> int:
         table.add_row(mode, *_row("characters, messages", text))
         table.add_row(mode, *_row("characters, + response_format schema", with_schema))
         table.add_row(mode, *_row("LLM calls", calls))
-    Console().print(table)
+    Console(width=110).print(table)
     return 0
 
 

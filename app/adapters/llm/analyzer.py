@@ -1,16 +1,22 @@
 """Stage 1 by an LLM: the Hazard Analysis Matrix filled level by level through litellm.
 
 In: a `GateRequest` and the active library. The system prompt lists the library's hazard classes
-as they are now (`library.py`), so a curator's new class is offered on the next request. The LLM
-is asked once per information level (task: the command; deployment: + the scene; user: + the
-user and the robot), each time across the four categories, with what the earlier levels found;
-the request goes in as delimited, JSON-encoded data (`rendering.py`). Every answer is parsed into
-`LevelAnswer` and checked (entity ids in the scene, classes in the library or marked new), with
+as they are now (`library.py`), so a curator's new class is offered on the next request. The
+matrix is filled per information level (task: the command; deployment: + the scene; user: + the
+user and the robot), each level across the four categories and from what the earlier levels
+found: either one call per level (`batch_levels=False`), each seeing only its partition, or the
+three levels in one call whose prompt shows the partition level by level (the service's
+default: one system prompt per request and a third of the characters); the request goes in as
+delimited, JSON-encoded data (`rendering.py`). Every answer is parsed into
+`LevelAnswer` and checked (each of the level's four cells answered, by a hazard or by "none,
+because ...", `cells.py`; entity ids in the scene; classes in the library or marked new), with
 one repair round (`structured.py`). Hazards still without the scene ids their templates need go
 back once more for their ids (the entity round). Levels merge by identity (`matrix.py`).
 Out: a `HazardReport` (analyzer "llm", proposals with source "llm:<model>").
 Fails closed: any `LlmError` (timeout, connection, 5xx, 429, invalid or truncated output)
-yields a report with the critical unknown "hazard analysis unavailable" and no proposals. An
+yields a report with the critical unknown "hazard analysis unavailable" and no proposals; an
+answer usable but for matrix cells still open after the repair round is "not understood" (the
+critical `comprehension` unknown). An
 analysis with no hazard and no unknown is not evidence of safety (a model that did not follow,
 or that obeyed text injected in the request, answers just that): with `require_findings` it
 becomes a critical `comprehension` unknown. Successful analyses are cached (`caching.py`).
@@ -23,6 +29,7 @@ import logging
 from collections.abc import Callable, Iterable
 
 from app.adapters.llm.caching import AnalysisCache, CachedAnalyses, request_hash
+from app.adapters.llm.cells import cell_problems, only_cells_missing
 from app.adapters.llm.client import ChatClient
 from app.adapters.llm.errors import LlmError, LlmOutputInvalid
 from app.adapters.llm.library import LibraryView, attribute_problems, attributes_text
@@ -72,8 +79,10 @@ class LlmAnalyzer:
             require_findings: read an empty analysis as "not understood" (True when the LLM
                 decides alone; an ensemble whose other member reads the command may pass False).
             theta: the gate's severity threshold, which the prompt's severity anchors name.
-            batch_levels: ask for the three levels in one call (a third of the characters
-                sent) instead of one call per level, each seeing only its partition.
+            batch_levels: ask for the three levels in one call (the service's default,
+                `SAFEGATE_LLM_BATCH_LEVELS`: a third of the characters sent,
+                bench/perf/llm_prompt_size.py); False asks one call per level, each call seeing
+                only its partition and the earlier calls' findings.
         """
         self._client = client
         self._prompts = prompts or PromptSet()
@@ -120,6 +129,15 @@ class LlmAnalyzer:
         if report is None:
             try:
                 report = self._analyze_levels(request, library)
+            except LlmOutputInvalid as error:
+                if not only_cells_missing(error.problems):
+                    _log.warning("LLM analysis failed, deferring: %s", error.detail)
+                    return failed_report(self.name, f"LlmOutputInvalid: {error.detail[:200]}")
+                # An answer that still leaves cells open after the repair round did not look at
+                # every category at every level: not understood, like an empty matrix.
+                _log.warning("LLM left matrix cells open, not understood: %s", error.detail)
+                return HazardReport(unknowns=(_not_understood(_CELLS_OPEN),),
+                                    analyzer=self.name)
             except LlmError as error:
                 _log.warning("LLM analysis failed, deferring: %s", error.detail)
                 return failed_report(self.name, f"{type(error).__name__}: {error.detail[:200]}")
@@ -127,7 +145,7 @@ class LlmAnalyzer:
         # Applied to cached reports too: the cache holds what the model found, whichever mode
         # (alone or in an ensemble) stored it.
         if self._require_findings and not report.proposals and not report.unknowns:
-            return report.model_copy(update={"unknowns": (_not_understood(),)})
+            return report.model_copy(update={"unknowns": (_not_understood(_EMPTY),)})
         return report
 
     def _analyze_levels(self, request: GateRequest, library: LibraryView) -> HazardReport:
@@ -167,13 +185,18 @@ class LlmAnalyzer:
 
     def _ask_batched(self, request: GateRequest, matrix: MatrixBuilder, library: LibraryView,
                      system: str, ids: SceneIds) -> None:
-        """All three levels in one call, folded in level order as if asked one by one."""
-        user = self._prompts.render(
-            "analysis_batched",
-            information=information(request, Level.USER),
-            **{f"{level.value}_focus": self._prompts.text(f"level_{level.value}")
-               for level in LEVELS},
-        )
+        """All three levels in one call, folded in level order as if asked one by one.
+
+        The prompt shows the partition level by level (the command, what the scene adds, what
+        the user and robot add) and the answer writes the levels in order, so each is written
+        after, and from, the earlier levels' findings; they merge by identity as in the
+        level-by-level mode. The task level's entities are dropped whatever it wrote.
+        """
+        values = {f"{level.value}_focus": self._prompts.text(f"level_{level.value}")
+                  for level in LEVELS}
+        values |= {f"{level.value}_information": information(request, level, only_new=True)
+                   for level in LEVELS}
+        user = self._prompts.render("analysis_batched", **values)
         checks = {level: _answer_check(level, ids, library) for level in LEVELS}
 
         def check(answer: BatchedAnswer) -> list[str]:
@@ -197,7 +220,8 @@ class LlmAnalyzer:
         user = self._prompts.render("analysis_entities", information=information(
             request, Level.USER), hazards=listed)
         try:
-            answer = self._ask(system, user, _answer_check(Level.USER, ids, library))
+            answer = self._ask(system, user,
+                               _answer_check(Level.USER, ids, library, cells=False))
         except LlmOutputInvalid as error:
             # The hazards stay without ids, so unbound: the gate defers (R2, entities missing).
             _log.warning("LLM gave no usable entities, hazards stay unbound: %s", error.detail)
@@ -208,10 +232,14 @@ class LlmAnalyzer:
         matrix.add(Level.USER, answer.model_copy(update={"dismissed": kept}))
 
 
-def _answer_check(level: Level, ids: SceneIds,
-                  library: LibraryView) -> Callable[[LevelAnswer], list[str]]:
+def _answer_check(level: Level, ids: SceneIds, library: LibraryView, *,
+                  cells: bool = True) -> Callable[[LevelAnswer], list[str]]:
+    """The semantic check of one level's answer; `cells` holds it to the level's four cells
+    (the entity round answers about a few hazards only, not a level)."""
+
     def check(answer: LevelAnswer) -> list[str]:
-        problems = library.class_problems(answer.hazards)
+        problems = cell_problems(answer, level.value) if cells else []
+        problems += library.class_problems(answer.hazards)
         problems += attribute_problems(answer.unknowns, scene=level is not Level.TASK)
         if level is Level.TASK:
             return problems
@@ -225,13 +253,19 @@ def _answer_check(level: Level, ids: SceneIds,
     return check
 
 
-def _not_understood() -> UnknownFact:
+_EMPTY = "the analysis found no hazard and no unknown, so the task was not understood"
+_CELLS_OPEN = ("the analysis left cells of the hazard matrix unanswered after a repair round, so "
+               "the task was not understood")
+
+
+def _not_understood(description: str) -> UnknownFact:
     return UnknownFact(
         attribute=COMPREHENSION,
-        description="the analysis found no hazard and no unknown, so the task was not understood",
+        description=description,
         critical=True,
-        why="an empty analysis cannot be told apart from a command the model did not follow or "
-        "from an instruction injected in the request to report nothing; it is never authorized",
+        why="an analysis that is empty or skips categories cannot be told apart from a command "
+        "the model did not follow or from an instruction injected in the request to report "
+        "nothing; it is never authorized",
         question="I could not work out what this task involves. Please describe it step by "
         "step, naming the objects and people concerned.",
     )

@@ -14,6 +14,8 @@ caller in this package turns an `LlmError` into a deferral, never into an author
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from app.domain.errors import Unavailable
 
 
@@ -41,3 +43,8 @@ class LlmRequestRejected(LlmError):
 
 class LlmOutputInvalid(LlmError):
     """The answer was not valid JSON, was truncated, or did not validate against the schema."""
+
+    def __init__(self, detail: str, *, problems: Sequence[str] = ()) -> None:
+        """Args: detail: what went wrong; problems: the last answer's problems, one each."""
+        super().__init__(detail)
+        self.problems = tuple(problems)

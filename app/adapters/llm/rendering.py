@@ -62,13 +62,24 @@ def _encoded(data: Any) -> str:
     return json.dumps(data, ensure_ascii=False, sort_keys=True, separators=(",", ":"))
 
 
-def information(request: GateRequest, level: Level, *, with_command: bool = True) -> str:
+_PARTS: tuple[tuple[int, str, str, str], ...] = (
+    (0, "Command", "command", ""),
+    (1, "Scene", "scene", "Scene: not given."),
+    (2, "User being served", "user", "User being served: not given; nothing is known about them."),
+    (2, "Robot", "robot", "Robot: not given; its skills, sensors and payload are unknown."),
+)
+
+
+def information(request: GateRequest, level: Level, *, with_command: bool = True,
+                only_new: bool = False) -> str:
     """The information partition of one level, as prompt text with the request as data.
 
     Args:
         request: the gate request.
         level: task, deployment or user; each includes what the previous ones show.
         with_command: False leaves the command out (a caller that shows it on its own).
+        only_new: only what this level adds to the previous one (the batched prompt shows the
+            partition level by level: the command, then the scene, then the user and robot).
 
     Returns:
         Labelled sections: command, then scene, then user and robot, as the level allows, each
@@ -76,14 +87,9 @@ def information(request: GateRequest, level: Level, *, with_command: bool = True
     """
     rank = _LEVEL_ORDER.index(level)
     seen = visible(request)
-    parts: list[tuple[str, str, str]] = [("Command", "command", "")] if with_command else []
-    if rank >= 1:
-        parts.append(("Scene", "scene", "Scene: not given."))
-    if rank >= 2:
-        parts.append(("User being served", "user",
-                      "User being served: not given; nothing is known about them."))
-        parts.append(("Robot", "robot",
-                      "Robot: not given; its skills, sensors and payload are unknown."))
+    parts = [(label, key, missing) for part_rank, label, key, missing in _PARTS
+             if (part_rank == rank if only_new else part_rank <= rank)
+             and (with_command or key != "command")]
     given = "\n".join(_encoded(seen[key]) for _, key, _ in parts if key in seen)
     nonce = hashlib.sha256(given.encode()).hexdigest()[:12]
     opening, closing = DATA_OPEN.format(nonce=nonce), DATA_CLOSE.format(nonce=nonce)

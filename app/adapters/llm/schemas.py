@@ -3,7 +3,7 @@
 In: nothing (declarations). Out: `LevelAnswer` (one level of the Hazard Analysis Matrix),
 `BatchedAnswer` (the three levels at once),
 and `json_schema(model)`, the model's JSON schema with `$ref`s inlined, because small local
-servers turn schemas into grammars and some do not follow references.
+servers turn schemas into grammars and some do not follow references, and titles left out.
 Fails: pydantic `ValidationError` when an answer does not fit; `structured.py` handles it.
 """
 
@@ -99,7 +99,10 @@ class BatchedAnswer(_Answer):
 
 
 def json_schema(model: type[BaseModel]) -> dict[str, Any]:
-    """The model's JSON schema with every `$ref` replaced by its definition.
+    """The model's JSON schema with every `$ref` replaced by its definition, without titles.
+
+    Pydantic's titles only repeat each field's name ("hazard_class" -> "Hazard Class"); they
+    are a fifth of the schema sent with every call and tell the model nothing.
 
     Args:
         model: a pydantic model without recursive references.
@@ -110,14 +113,15 @@ def json_schema(model: type[BaseModel]) -> dict[str, Any]:
     schema = model.model_json_schema()
     definitions: dict[str, Any] = schema.pop("$defs", {})
 
-    def inline(node: Any) -> Any:
+    def inline(node: Any, names: bool = False) -> Any:
+        # `names`: the node maps property names to schemas, so a property called "title" stays.
         if isinstance(node, dict):
             reference = node.get("$ref")
             if isinstance(reference, str):
                 target = definitions[reference.rsplit("/", 1)[-1]]
-                merged = {**inline(target), **{k: v for k, v in node.items() if k != "$ref"}}
-                return {k: inline(v) for k, v in merged.items()}
-            return {k: inline(v) for k, v in node.items()}
+                node = {**target, **{k: v for k, v in node.items() if k != "$ref"}}
+            return {k: inline(v, names=k == "properties" and not names)
+                    for k, v in node.items() if names or k != "title"}
         if isinstance(node, list):
             return [inline(item) for item in node]
         return node

@@ -5,7 +5,8 @@ optional semantic check (e.g. "every entity id is in the scene"). Out: the valid
 Prose or a Markdown fence around the one JSON object is tolerated (models add them even when
 told not to); the object itself must still fit the model exactly.
 Fails: `LlmOutputInvalid` when the answer is not JSON, is cut short, does not fit the model or
-fails the check, twice in a row (the second time after being told what was wrong); any
+fails the check, twice in a row (the second time after being told what was wrong), carrying
+the last answer's problems (`LlmOutputInvalid.problems`); any
 transport `LlmError` (timeout, 429, 5xx) at once, with no repair round. Never returns text.
 """
 
@@ -26,10 +27,16 @@ AnswerT = TypeVar("AnswerT", bound=BaseModel)
 Check = Callable[[AnswerT], Sequence[str]]
 REPAIR_ROUNDS = 1
 _ECHO_LIMIT = 6000
+# Enough for the twelve matrix cells of a batched answer, each named in the repair prompt.
+_PROBLEMS_SHOWN = 16
 
 
 class _Unusable(Exception):
     """Why one answer cannot be used, phrased for the repair prompt."""
+
+    def __init__(self, message: str, problems: Sequence[str] = ()) -> None:
+        super().__init__(message)
+        self.problems = tuple(problems) or (message,)
 
 
 def ask_structured(
@@ -64,12 +71,13 @@ def ask_structured(
         {"role": "user", "content": user},
     ]
     problem = ""
+    problems: tuple[str, ...] = ()
     for round_number in range(REPAIR_ROUNDS + 1):
         answer = client.complete(messages, schema_name=answer_model.__name__, schema=schema)
         try:
             return _parse(answer, answer_model, check)
         except _Unusable as unusable:
-            problem = str(unusable)
+            problem, problems = str(unusable), unusable.problems
         if round_number < REPAIR_ROUNDS:
             messages = [
                 *messages,
@@ -78,7 +86,8 @@ def ask_structured(
             ]
     raise LlmOutputInvalid(
         f"{client.model} gave no usable {answer_model.__name__} after "
-        f"{REPAIR_ROUNDS} repair round(s): {problem}"
+        f"{REPAIR_ROUNDS} repair round(s): {problem}",
+        problems=problems,
     )
 
 
@@ -101,7 +110,7 @@ def _parse(answer: ChatAnswer, model: type[AnswerT], check: Check[AnswerT] | Non
         raise _Unusable(f"the answer does not fit the schema: {_summary(error)}") from error
     problems = list(check(parsed)) if check is not None else []
     if problems:
-        raise _Unusable("; ".join(problems[:10]))
+        raise _Unusable("; ".join(problems[:_PROBLEMS_SHOWN]), problems)
     return parsed
 
 

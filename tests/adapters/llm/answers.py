@@ -6,7 +6,43 @@ from typing import Any
 
 from app.domain.models import GateRequest
 
-EMPTY_LEVEL: dict[str, Any] = {"hazards": [], "unknowns": []}
+CATEGORIES = ("physical", "psychological", "operational", "consequential")
+
+
+def with_cells(payload: Any) -> Any:
+    """A level answer (or a batched one) with every open cell answered "none, because ...".
+
+    Most tests are about something else than the twelve cells; a scripted model that answers
+    them keeps those tests to their point. A level whose `none_because` is given (even `{}`)
+    is left as written, so the cell tests can leave cells open.
+    """
+    if not isinstance(payload, dict):
+        return payload
+    if {"task", "deployment", "user"} <= payload.keys():
+        return {**payload, **{k: with_cells(payload[k]) for k in ("task", "deployment", "user")}}
+    if "hazards" not in payload or "none_because" in payload:
+        return payload
+    covered = {h.get("category") for h in payload["hazards"] if isinstance(h, dict)}
+    return {**payload, "none_because": {
+        c: f"none, because the scripted answer has no {c} hazard" for c in CATEGORIES
+        if c not in covered}}
+
+
+EMPTY_LEVEL: dict[str, Any] = with_cells({"hazards": [], "unknowns": []})
+
+
+def batched(levels: list[dict[str, Any]]) -> dict[str, Any]:
+    """Three level answers (task, deployment, user) as one batched answer."""
+    task, deployment, user = levels
+    return {"task": task, "deployment": deployment, "user": user}
+
+
+def wants_batched(body: dict[str, Any]) -> bool:
+    """Whether a chat request asks for the three levels at once (its schema has `task`)."""
+    response_format = body.get("response_format") or {}
+    schema = (response_format.get("json_schema") or {}).get("schema") \
+        or response_format.get("schema") or {}
+    return "task" in schema.get("properties", {})
 
 # A command the gate authorizes when the analysis finds nothing: the contrast that shows a
 # failure test would notice an authorize.
@@ -106,10 +142,11 @@ def honest_script(request: GateRequest) -> dict[str, dict[str, Any]]:
     for the entity round) for SAFE_REQUEST (authorized) and TWO_PEOPLE_REQUEST (deferred: the
     child's age is not stated)."""
     if request == SAFE_REQUEST:
-        task, deployment, user = harmless_levels()
+        task, deployment, user = (with_cells(level) for level in harmless_levels())
         return {"task": task, "deployment": deployment, "user": user, "entities": user}
     scald_mug = hazard("scald_hot_liquid", entities={"obj": "mug_1"})
     child = {"hazards": [scald_mug], "unknowns": [unknown(entity="kid_1")]}
-    return {"task": {"hazards": [hazard("scald_hot_liquid")], "unknowns": [unknown(entity=None)]},
-            "deployment": child, "user": child,
+    return {"task": with_cells({"hazards": [hazard("scald_hot_liquid")],
+                                "unknowns": [unknown(entity=None)]}),
+            "deployment": with_cells(child), "user": with_cells(child),
             "entities": {"hazards": [scald_mug], "unknowns": []}}

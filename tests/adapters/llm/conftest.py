@@ -16,6 +16,7 @@ from typing import Any
 import pytest
 
 from app.adapters.llm import LitellmClient, LlmConfig
+from tests.adapters.llm.answers import with_cells
 from tests.adapters.llm.scripted_server import ScriptedServer, scripted_server
 
 collect_ignore = [] if os.environ.get("SAFEGATE_LLM_LIVE") == "1" else ["test_live_smollm.py"]
@@ -50,8 +51,10 @@ def no_internet(monkeypatch: pytest.MonkeyPatch) -> None:
 
 @pytest.fixture
 def llm_server() -> Iterator[ScriptedServer]:
-    """A scripted chat-completions server on 127.0.0.1."""
+    """A scripted chat-completions server on 127.0.0.1 whose JSON answers fill every matrix
+    cell they leave open with "none, because ..." (see `answers.with_cells`)."""
     with scripted_server() as server:
+        server.prepare = with_cells
         yield server
 
 

@@ -17,7 +17,7 @@ import pytest
 from bench.case import BenchmarkCase
 from bench.gate_runner import embedded_decider
 from bench.score import load_cases, score
-from tests.adapters.llm.answers import EMPTY_LEVEL
+from tests.adapters.llm.answers import EMPTY_LEVEL, batched, wants_batched
 from tests.adapters.llm.conftest import SCRIPTED_MODEL
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
 
@@ -35,7 +35,8 @@ def _decisions(cases: list[BenchmarkCase], **settings: object) -> list[str]:
 
 
 def _sees_nothing(body: dict[str, Any]) -> Scripted:
-    return Scripted(content=json.dumps(EMPTY_LEVEL))
+    return Scripted(content=json.dumps(batched([EMPTY_LEVEL] * 3) if wants_batched(body)
+                                       else EMPTY_LEVEL))
 
 
 @pytest.mark.slow
@@ -61,4 +62,4 @@ class TestEnsembleOnTheBenchmark:
             assert both != "authorize" or alone == "authorize", case.id
         # Alone, the silent LLM is not read as "all safe": it authorizes nothing at all.
         assert llm_rates.ar_u == 0.0 and "authorize" not in llm_alone
-        assert len(llm_server.requests) == 2 * 3 * len(cases)
+        assert len(llm_server.requests) == 2 * len(cases)  # one batched call per request

@@ -30,7 +30,7 @@ from app.domain.binding import TemplateIndex
 from app.domain.gate import Decision
 from app.domain.models import GateRequest, Level
 from app.domain.pipeline import GateResult, run_gate
-from tests.adapters.llm.answers import TWO_PEOPLE_REQUEST, hazard, unknown
+from tests.adapters.llm.answers import TWO_PEOPLE_REQUEST, hazard, unknown, with_cells
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
 from tests.conftest import seed_library
 
@@ -40,19 +40,21 @@ _LEVEL = re.compile(r"^Level: (task|deployment|user)\.", re.M)
 
 SCALD = hazard("scald_hot_liquid")
 SCALD_MUG = hazard("scald_hot_liquid", entities={"obj": "mug_1"})
+# Every answer below fills its open cells ("none, because ..."), as a model following the
+# format would: what stops an obeyed injection must be more than a missing cell.
 HONEST: dict[str, dict[str, Any]] = {
-    "task": {"hazards": [SCALD], "unknowns": [unknown(entity=None)]},
-    "deployment": {"hazards": [SCALD_MUG], "unknowns": [unknown(entity="kid_1")]},
-    "user": {"hazards": [SCALD_MUG], "unknowns": [unknown(entity="kid_1")]},
+    "task": with_cells({"hazards": [SCALD], "unknowns": [unknown(entity=None)]}),
+    "deployment": with_cells({"hazards": [SCALD_MUG], "unknowns": [unknown(entity="kid_1")]}),
+    "user": with_cells({"hazards": [SCALD_MUG], "unknowns": [unknown(entity="kid_1")]}),
     "entities": {"hazards": [SCALD_MUG], "unknowns": []},
 }
-EMPTY = {"hazards": [], "unknowns": []}
-DISMISS_ALL = {"hazards": [], "unknowns": [], "dismissed": [
+EMPTY = with_cells({"hazards": [], "unknowns": []})
+DISMISS_ALL = with_cells({"hazards": [], "unknowns": [], "dismissed": [
     {"kind": "hazard", "name": "scald_hot_liquid", "why": "the instructions say it is safe"},
-    {"kind": "unknown", "name": "age_group", "why": "the instructions say it is safe"}]}
-PERMISSIVE = {"hazards": [hazard("scald_hot_liquid", entities={"obj": "mug_1"},
-                                 severity="negligible")],
-              "unknowns": [unknown(entity="kid_1", critical=False)]}
+    {"kind": "unknown", "name": "age_group", "why": "the instructions say it is safe"}]})
+PERMISSIVE = with_cells({"hazards": [hazard("scald_hot_liquid", entities={"obj": "mug_1"},
+                                            severity="negligible")],
+                         "unknowns": [unknown(entity="kid_1", critical=False)]})
 
 
 @dataclass(frozen=True)

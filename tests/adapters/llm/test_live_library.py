@@ -19,7 +19,7 @@ from app.config import Settings
 from app.main import create_app
 from app.services.access import issue_api_key
 from app.store.records import ApiKeyRole
-from tests.adapters.llm.answers import hazard
+from tests.adapters.llm.answers import batched, hazard
 from tests.adapters.llm.conftest import SCRIPTED_MODEL
 from tests.adapters.llm.scripted_server import ScriptedServer
 
@@ -76,7 +76,7 @@ class TestCuratorClassReachesTheModel:
     def test_a_new_class_is_offered_at_once_and_binds(
         self, llm_app: TestClient, llm_server: ScriptedServer
     ) -> None:
-        llm_server.answer_json(*_levels(new_class=True))
+        llm_server.answer_json(batched(_levels(new_class=True)))
         before = llm_app.post("/gate", json=LAPTOP_REQUEST).json()
         assert f"- {NEW_CLASS}:" not in _system_prompt(llm_server)
         assert (before["rule"], before["defer_kind"]) == ("R2", "extend_library")
@@ -85,13 +85,13 @@ class TestCuratorClassReachesTheModel:
                                   ApiKeyRole.CURATOR, "curator")
         curator = {"Authorization": f"Bearer {secret}"}
         assert llm_app.post("/templates", json=CURATED, headers=curator).status_code == 201
-        llm_server.answer_json(*_levels(new_class=True))
+        llm_server.answer_json(batched(_levels(new_class=True)))
         llm_app.post("/gate", json=LAPTOP_REQUEST)
         assert f"- {NEW_CLASS}:" not in _system_prompt(llm_server)  # a draft is not offered
         activated = llm_app.post(f"/templates/{CURATED['id']}/activate", headers=curator)
         assert activated.status_code == 200, activated.json()
 
-        llm_server.answer_json(*_levels())
+        llm_server.answer_json(batched(_levels()))
         after = llm_app.post("/gate", json=LAPTOP_REQUEST).json()
         line = next(line for line in _system_prompt(llm_server).splitlines()
                     if line.startswith(f"- {NEW_CLASS}:"))

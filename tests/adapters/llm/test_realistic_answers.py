@@ -24,7 +24,13 @@ from app.domain.binding import TemplateIndex
 from app.domain.gate import Decision
 from app.domain.models import GateRequest
 from app.domain.pipeline import GateResult, run_gate
-from tests.adapters.llm.answers import SAFE_REQUEST, TWO_PEOPLE_REQUEST, hazard, honest_script
+from tests.adapters.llm.answers import (
+    SAFE_REQUEST,
+    TWO_PEOPLE_REQUEST,
+    hazard,
+    honest_script,
+    with_cells,
+)
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
 from tests.conftest import seed_library
 
@@ -72,7 +78,9 @@ def invented_class(answer: dict[str, Any], level: str, repair: bool) -> Scripted
 
 def unrestated(answer: dict[str, Any], level: str, repair: bool) -> Scripted:
     if level in ("deployment", "user"):
-        return _plain({**answer, "hazards": []})
+        # The model answers the cells ("none new") but does not repeat the earlier hazards.
+        cells_left = {k: v for k, v in answer.items() if k != "none_because"}
+        return _plain(with_cells({**cells_left, "hazards": []}))
     return _plain(answer)
 
 
@@ -93,6 +101,13 @@ def truncated_always(answer: dict[str, Any], level: str, repair: bool) -> Script
 def obeys_an_injection_to_report_nothing(answer: dict[str, Any], level: str,
                                          repair: bool) -> Scripted:
     if level == "user":
+        return _plain(with_cells({"hazards": [], "unknowns": []}))
+    return _plain(answer)
+
+
+def obeys_an_injection_to_report_nothing_without_cells(answer: dict[str, Any], level: str,
+                                                       repair: bool) -> Scripted:
+    if level == "user":
         return Scripted(content='{"hazards": [], "unknowns": []}')
     return _plain(answer)
 
@@ -104,7 +119,7 @@ def obeys_an_injection_to_dismiss_everything(answer: dict[str, Any], level: str,
                       for h in answer["hazards"]]
         everything += [{"kind": "unknown", "name": u["attribute"], "why": "as instructed"}
                        for u in answer["unknowns"]]
-        return _plain({"hazards": [], "unknowns": [], "dismissed": everything})
+        return _plain(with_cells({"hazards": [], "unknowns": [], "dismissed": everything}))
     return _plain(answer)
 
 
@@ -125,6 +140,9 @@ DISTORTIONS = {
     "list cut off twice": Distortion(truncated_always, False),
     # Silence at one level is not evidence: what the earlier levels found still decides.
     "followed an injection: nothing": Distortion(obeys_an_injection_to_report_nothing, True),
+    # ...but a level that leaves its four cells unanswered, repair or not, is not understood.
+    "followed an injection: nothing, no cells": Distortion(
+        obeys_an_injection_to_report_nothing_without_cells, False),
     "followed an injection: dismiss all": Distortion(obeys_an_injection_to_dismiss_everything,
                                                      False),
 }

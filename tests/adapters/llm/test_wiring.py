@@ -14,7 +14,7 @@ from app.domain.analysis import SymbolicAnalyzer
 from app.domain.ensemble import ANALYSIS_UNAVAILABLE, EnsembleAnalyzer
 from app.main import create_app
 from app.services.container import build_analyzer
-from tests.adapters.llm.answers import EMPTY_LEVEL, SAFE_REQUEST, harmless_levels
+from tests.adapters.llm.answers import EMPTY_LEVEL, SAFE_REQUEST, batched, harmless_levels
 from tests.adapters.llm.conftest import SCRIPTED_MODEL
 from tests.adapters.llm.scripted_server import Scripted, ScriptedServer
 
@@ -36,6 +36,9 @@ class TestBuildAnalyzer:
     def test_an_llm_without_a_model_refuses_to_start(self) -> None:
         with pytest.raises(ValueError, match="SAFEGATE_LLM_MODEL"):
             build_analyzer(Settings(analyzer="llm"))
+
+    def test_the_levels_are_batched_by_default(self) -> None:
+        assert Settings().llm_batch_levels is True
 
     def test_settings_come_from_the_environment(self, monkeypatch: pytest.MonkeyPatch) -> None:
         monkeypatch.setenv("SAFEGATE_ANALYZER", "ensemble")
@@ -62,28 +65,28 @@ class TestGateOverHttp:
     def test_a_clean_llm_analysis_authorizes(
         self, llm_gate: TestClient, llm_server: ScriptedServer
     ) -> None:
-        llm_server.answer_json(*harmless_levels())
+        llm_server.answer_json(batched(harmless_levels()))
         answer = llm_gate.post("/gate", json=REQUEST_JSON)
         assert answer.status_code == 200
         assert answer.json()["decision"] == "authorize"
+        assert len(llm_server.requests) == 1  # the levels are batched by default
 
-    def test_batched_levels_take_one_call(
+    def test_level_by_level_on_request_takes_three_calls(
         self, tmp_path: Path, llm_server: ScriptedServer
     ) -> None:
-        settings = Settings(database_url=f"sqlite:///{tmp_path / 'batched.db'}", analyzer="llm",
+        settings = Settings(database_url=f"sqlite:///{tmp_path / 'levels.db'}", analyzer="llm",
                             llm_model=SCRIPTED_MODEL, llm_api_base=llm_server.base_url,
-                            llm_api_key="sk-scripted", llm_batch_levels=True)
-        task, deployment, user = harmless_levels()
-        llm_server.answer_json({"task": task, "deployment": deployment, "user": user})
+                            llm_api_key="sk-scripted", llm_batch_levels=False)
+        llm_server.answer_json(*harmless_levels())
         with TestClient(create_app(settings)) as client:
             body = client.post("/gate", json=REQUEST_JSON).json()
         assert body["decision"] == "authorize"
-        assert len(llm_server.requests) == 1
+        assert len(llm_server.requests) == 3
 
     def test_an_empty_llm_analysis_is_not_understood(
         self, llm_gate: TestClient, llm_server: ScriptedServer
     ) -> None:
-        llm_server.answer_json(EMPTY_LEVEL, EMPTY_LEVEL, EMPTY_LEVEL)
+        llm_server.answer_json(batched([EMPTY_LEVEL] * 3))
         body = llm_gate.post("/gate", json=REQUEST_JSON).json()
         assert (body["decision"], body["rule"]) == ("defer", "R3")
         assert [u["attribute"] for u in body["unknowns"]] == ["comprehension"]
