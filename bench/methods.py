@@ -53,6 +53,13 @@ def _gate_decider(client: TestClient) -> Decide:
     return decide
 
 
+
+def _litellm_missing() -> str | None:
+    """Why an LLM method cannot run when the `llm` extra is absent, else None."""
+    if importlib.util.find_spec("litellm") is None:
+        return "litellm is not installed (pip install -e '.[llm]')"
+    return None
+
 class SafeGateMethod:
     """SafeGate through its HTTP API: POST /gate of a fresh embedded app per run."""
 
@@ -110,9 +117,7 @@ class ScriptedLlmMethod:
 
     def unavailable_reason(self) -> str | None:
         """Why it cannot run: litellm (the `llm` extra) is not installed."""
-        if importlib.util.find_spec("litellm") is None:
-            return "litellm is not installed (pip install -e '.[llm]')"
-        return None
+        return _litellm_missing()
 
     def open(self) -> AbstractContextManager[Decide]:
         """A scripted server and an embedded app whose LLM is that server."""
@@ -146,9 +151,7 @@ class LLMClassifierMethod:
         """Why it cannot run: no model configured, or litellm is not installed."""
         if not os.environ.get("SAFEGATE_LLM_MODEL"):
             return "no LLM configured"
-        if importlib.util.find_spec("litellm") is None:
-            return "litellm is not installed (pip install -e '.[llm]')"
-        return None
+        return _litellm_missing()
 
     def open(self) -> AbstractContextManager[Decide]:
         """The classifier built from `SAFEGATE_*` settings."""

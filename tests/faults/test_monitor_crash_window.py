@@ -29,24 +29,12 @@ from monitor_kit import (
     before,
     store_knife_contract,
 )
+from replica_kit import BLADE_NEAR_PERSON, knife_contract_in
 from websockets.sync.client import ClientConnection, connect
-
-from app.store.db import create_engine_for, migrate
-from app.store.repository import Repository
 
 pytestmark = [pytest.mark.faults, pytest.mark.slow]
 
 KILL_DELAYS = [0.0, 0.05, 0.25, 0.6]
-BLADE_NEAR_PERSON = "sharp.blade_carried_near_person.slow_with_blade_near_people"
-
-
-def knife_contract_in(url: str) -> str:
-    engine = create_engine_for(url)
-    try:
-        migrate(engine)
-        return store_knife_contract(Repository(engine))
-    finally:
-        engine.dispose()
 
 
 def exchange(socket: ClientConnection, message: dict[str, Any]) -> dict[str, Any]:
