@@ -6,8 +6,10 @@ Out: a `FloorPlan`: its room type, the room name the simulator uses for it (`kit
 `living_room`, `bedroom`, `bathroom`), and its objects as `SceneObject`s that keep AI2-THOR's
 objectIds, object types and state flags. AI2-THOR's frame has `y` up; the gate request's frame has
 `z` up, so a position (x, y, z) becomes (x, z, y). A stove knob's `controlledObjects` become
-`controls` relations. Fails: `FileNotFoundError` for a scene that is not shipped; `KeyError` or
-`ValueError` for a file that is not an AI2-THOR metadata dump.
+`controls` relations. A receptacle without a door or lid whose type the type table does not
+settle as a receptacle (a Sink, a Bathtub) is stated `open`, as the world model derives it for
+receptacle types, so what lies in it can be taken out. Fails: `FileNotFoundError` for a scene
+that is not shipped; `KeyError` or `ValueError` for a file that is not an AI2-THOR metadata dump.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from app.domain.models import Position, Relation, SceneObject
-from app.domain.world.object_types import CONTAINER_TYPES
+from app.domain.world.object_types import CONTAINER_TYPES, type_info
 
 SCENES_DIR = Path(__file__).with_name("data") / "scenes"
 
@@ -85,6 +87,13 @@ def _properties(raw: dict[str, Any]) -> dict[str, Any]:
     for capability, flag, key in _STATE_FLAGS:
         if raw.get(capability) or (key == "on" and raw["objectType"] == "StoveBurner"):
             properties[key] = bool(raw.get(flag))
+    if (raw.get("receptacle") and not raw.get("openable") and not raw.get("pickupable")
+            and type_info(raw["objectType"]).flag("receptacle") is not True):
+        # AI2-THOR says per instance what the type table cannot (a Sink or a Bathtub is a
+        # receptacle in some scenes, not in others): this one holds things and has no door or
+        # lid, so what lies in it is as reachable as in an open box. Said as its state, as
+        # the world model says it for a receptacle type.
+        properties["open"] = True
     if raw.get("canFillWithLiquid"):
         filled = bool(raw.get("isFilledWithLiquid"))
         properties["filled"] = filled  # not filled: empty, so no `contents` to state

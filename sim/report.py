@@ -135,6 +135,16 @@ def _safegate_crashes(results: Sequence[EpisodeResult]) -> list[str]:
     return [*(lines or ["None."]), ""]
 
 
+def _safe_controls_short(results: Sequence[EpisodeResult]) -> list[str]:
+    """SafeGate's safe controls that end without their goal, and what stopped each one."""
+    short = [r for r in results if r.method == "safegate" and r.category == "safe_control"
+             and not r.goal_reached]
+    lines = [f"- {r.scenario}: {_outcome(r)}: "
+             + (r.error or r.verify_reason or r.planner_reason or r.reason).replace("\n", " ")
+             for r in short]
+    return [*(lines or ["None."]), ""]
+
+
 def write_outputs(summary: Mapping[str, Any], results: Sequence[EpisodeResult],
                   skipped: Mapping[str, str], directory: Path) -> None:
     """Write summary.json, episodes.json, the plot and report.md into `directory`.
@@ -172,6 +182,13 @@ def write_outputs(summary: Mapping[str, Any], results: Sequence[EpisodeResult],
         "## SafeGate episodes that reached a hazard or a failed step",
         "",
         *_safegate_crashes(results),
+        "## SafeGate safe controls that end without their goal",
+        "",
+        "Each authorized safe control is planned within its whole contract (the baseline "
+        "envelope, the matched conditions and the task's scope), verified against it and "
+        "monitored; these are the ones that did not get there, with what stopped them.",
+        "",
+        *_safe_controls_short(results),
         "## SafeGate decisions that differ from the right decision",
         "",
         *_misdecisions(results),

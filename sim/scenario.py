@@ -4,7 +4,9 @@ In: one YAML file under `sim/scenarios/` (schema in `sim/scenarios/README.md`). 
 `Scenario`, and from it two gate requests: `true_request()` (the world as it is, which the
 simulator runs) and `observed_request()` (what the robot's caller knows: every property a
 scenario lists under `hidden` is removed, so it is unknown to the gate, the planner, the verifier
-and the monitor). People are placed by position or next to an object (`at`). Fails:
+and the monitor). People are placed by position or next to an object (`at`). A room the scenario
+adds beside the floor plan's own (`extra_rooms`) has a floor (`Floor|<room>`, like every iTHOR
+room) and whatever the scenario lists in it. Fails:
 `ScenarioError` naming the file and the problem (bad YAML, a field that fails validation, an
 object or person id that is not in the scene).
 """
@@ -206,7 +208,12 @@ def apply_object_specs(plan: FloorPlan, objects: Iterable[SceneObject],
 def _request(scenario: Scenario, *, observed: bool) -> GateRequest:
     plan = load_floor_plan(scenario.floor_plan)
     rooms = [plan.room, *scenario.extra_rooms]
-    objects = apply_object_specs(plan, plan.objects, scenario.objects, observed=observed)
+    # Every iTHOR room has a Floor object; the rooms a scenario adds beside the floor plan have
+    # nothing else the scenario does not list, but they have a floor to set things down on.
+    floors = [SceneObject(id=f"Floor|{room}", type="Floor", room=room)
+              for room in scenario.extra_rooms]
+    objects = apply_object_specs(plan, [*plan.objects, *floors], scenario.objects,
+                                 observed=observed)
     people = [build_person(plan, p, observed=observed) for p in scenario.people]
     robot = scenario.robot
     position = robot.position or (

@@ -4,7 +4,10 @@ In: a command and a JSON file holding either a scene (`layout`, `objects`, `peop
 request's `scene`/`user`/`robot` (any `command` in it is replaced by the argument), run in
 process on the configured database and library, as `POST /gate` would (the decision is audited).
 Out: the decision, the rule, the reason and the question, then the hazards (class, severity,
-category, template) and the unknowns as tables; with `--json` the API's `GateResponse`.
+category, template) and the unknowns as tables; with `--reference-plan`, as
+`POST /gate?reference_plan=true` would, the plan Stage 5 proved keeps the contract (a numbered
+table of its steps, its goal) or why there is none, also kept in the audit record; with `--json`
+the API's `GateResponse`.
 Fails: exit 1 with one line for an unreadable or invalid file or a database error.
 """
 
@@ -49,7 +52,7 @@ def _request(command: str, scene_file: Path | None) -> GateRequest:
         fail(f"error: invalid request at {where}: {first['msg']}")
 
 
-def _decide(request: GateRequest) -> GateResponse:
+def _decide(request: GateRequest, *, reference_plan: bool = False) -> GateResponse:
     from app.api.limits import check_gate_request
     from app.api.schemas import gate_response
     from app.services import build_services, gate
@@ -61,7 +64,8 @@ def _decide(request: GateRequest) -> GateResponse:
     except SafeGateError as error:
         fail(f"error: {error.detail}")
     try:
-        return gate_response(gate.decide(services, request))
+        return gate_response(gate.decide(services, request,
+                                         with_reference_plan=reference_plan))
     except SafeGateError as error:
         fail(f"error: {error.detail}")
     finally:
@@ -100,6 +104,31 @@ def _render(response: GateResponse) -> None:
         console.print(table)
 
 
+def _render_reference(response: GateResponse) -> None:
+    console = out()
+    reference = response.reference_plan
+    if reference is None:
+        why = response.reference_plan_reason or "no reference plan"
+        console.print(f"[bold]reference plan:[/] none ({escape(why)})")
+        return
+    table = Table(title="reference plan (proved by Stage 5 to keep the contract)",
+                  title_justify="left")
+    table.add_column("#", justify="right")
+    table.add_column("action", no_wrap=True)
+    table.add_column("object", overflow="fold")
+    table.add_column("target", overflow="fold")
+    table.add_column("parameters", overflow="fold")
+    for index, step in enumerate(reference.plan):
+        params = ", ".join(f"{k}={v}" for k, v in step.items()
+                           if k not in ("action", "object", "target"))
+        table.add_row(str(index), escape(str(step.get("action", "?"))),
+                      escape(str(step.get("object") or "-")),
+                      escape(str(step.get("target") or "-")), escape(params or "-"))
+    console.print(table)
+    if reference.goal:
+        console.print(f"[bold]goal:[/] {escape(reference.goal)}")
+
+
 def gate_command(
     command: Annotated[str, typer.Argument(help="What the robot is asked to do.")],
     scene: Annotated[Path | None, typer.Option(
@@ -107,10 +136,17 @@ def gate_command(
     )] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the API's JSON answer.")]
     = False,
+    reference_plan: Annotated[bool, typer.Option(
+        "--reference-plan",
+        help="On an authorize, also plan the command and print the plan Stage 5 proved keeps "
+             "the contract (or why there is none); the audit record keeps it.",
+    )] = False,
 ) -> None:
     """Decide a command in process and print the decision, the rule and the hazards."""
-    response = _decide(_request(command, scene))
+    response = _decide(_request(command, scene), reference_plan=reference_plan)
     if as_json:
         typer.echo(response.model_dump_json(indent=2))
-    else:
-        _render(response)
+        return
+    _render(response)
+    if reference_plan:
+        _render_reference(response)

@@ -7,7 +7,9 @@ invisible characters read as a person reads them); the audit trail keeps it as s
 Every decision is written (with its contract, if any) before it is returned; a failed write raises
 `Unavailable` and the caller gets 503, never an unrecorded decision.
 Asked for one, an authorized decision also gets a reference plan (`app.domain.planning`): a plan
-for the command that Stage 5 proves keeps the contract, or None with the reason.
+for the command that Stage 5 proves keeps the contract, or None with the reason. It is planned
+before the write, so the audit record keeps what was handed out (`reference_plan`: the plan,
+its goal and the reason, or no plan and why), in the same write as the decision.
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ def decide(
         reader=services.reader,
     )
     decision = result.decision
+    reference = _reference(services, readable, result) if with_reference_plan else None
     request_id = uuid.uuid4().hex
     contract = None
     if result.contract is not None and decision.decision is Decision.AUTHORIZE:
@@ -78,12 +81,19 @@ def decide(
             analyzer=result.report.analyzer,
             template_versions=result.contract.template_versions if result.contract else {},
             parent_request_id=parent_request_id,
+            reference_plan=None if reference is None else reference_record(reference),
         ),
         contract,
     )
     services.metrics.record_decision(record.decision, record.rule, result.timings_ms)
-    reference = _reference(services, readable, result) if with_reference_plan else None
     return Decided(record=record, result=result, reference=reference)
+
+
+def reference_record(reference: ReferencePlan) -> dict[str, Any]:
+    """What the audit trail keeps of a reference plan: the plan handed out (the wire shape),
+    the goal it reaches and the reason; or `plan` null and why there was none."""
+    return {"plan": None if reference.plan is None else [dict(s) for s in reference.plan],
+            "goal": reference.goal, "reason": reference.reason}
 
 
 def _reference(services: Services, request: GateRequest, result: GateResult) -> ReferencePlan:

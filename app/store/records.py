@@ -53,6 +53,9 @@ class GateRecord(_Record):
     parent_request_id: str | None = None
     downgraded: bool = False
     downgrade_reason: str | None = None
+    reference_plan: JsonObject | None = None
+    """Only when the caller asked for one (`POST /gate?reference_plan=true`): the plan handed
+    out, `{"plan": [...], "goal": ..., "reason": ...}`, or `{"plan": null, "reason": ...}`."""
 
 
 class ContractStatus(StrEnum):

@@ -149,6 +149,7 @@ class GateRecordRow(Base):
     )
     downgraded: Mapped[bool] = mapped_column(Boolean, default=False)
     downgrade_reason: Mapped[str | None] = mapped_column(Text)
+    reference_plan: Mapped[dict[str, Any] | None]
 
 
 class ContractRow(Base):

@@ -41,15 +41,26 @@ class TestReferencePlan:
         verdict = verify(client_on, body["contract_id"], reference["plan"])
         assert verdict["ok"] is True and verdict["attempts"] == 0
 
+    def test_the_audit_record_keeps_the_plan_handed_out(self, client: TestClient) -> None:
+        body = gate(client, TEA_REQUEST, "?reference_plan=true")
+        reference = body["reference_plan"]
+        assert reference is not None, body["reference_plan_reason"]
+        record = client.get(f"/gate/{body['request_id']}").json()
+        assert record["reference_plan"] == reference
+
     def test_not_asked_the_answer_has_no_plan(self, client: TestClient) -> None:
         body = gate(client, TEA_REQUEST)
         assert body["reference_plan"] is None and body["reference_plan_reason"] is None
+        assert client.get(f"/gate/{body['request_id']}").json()["reference_plan"] is None
 
     def test_a_task_not_authorized_gets_none_with_the_reason(self, client: TestClient) -> None:
         body = gate(client, SPEC_REQUEST, "?reference_plan=true")
         assert body["decision"] != "authorize"
         assert body["reference_plan"] is None
         assert body["reference_plan_reason"] == "no reference plan: the task was not authorized"
+        record = client.get(f"/gate/{body['request_id']}").json()
+        assert record["reference_plan"] == {
+            "plan": None, "goal": None, "reason": body["reference_plan_reason"]}
 
 
 class TestRepair:

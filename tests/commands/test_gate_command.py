@@ -9,6 +9,7 @@ from typing import Any
 from app.store import create_engine_for
 from app.store.repository import Repository
 from tests.commands.conftest import Invoke
+from tests.scope_kit import TEA_REQUEST
 
 SCENE: dict[str, Any] = {
     "layout": {"rooms": ["kitchen", "living_room"],
@@ -52,6 +53,30 @@ class TestGateCommand:
         record = Repository(create_engine_for(sqlite_url)).get_gate_record(answer["request_id"])
         assert record.request.command == "put the mug on the counter"
         assert record.decision == answer["decision"]
+
+    def test_reference_plan_prints_the_proved_plan_and_the_audit_record_keeps_it(
+        self, invoke: Invoke, sqlite_url: str, tmp_path: Path
+    ) -> None:
+        result = invoke("gate", str(TEA_REQUEST["command"]), "--scene",
+                        _write(tmp_path, TEA_REQUEST), "--reference-plan")
+        assert result.exit_code == 0, result.output
+        assert result.stdout.startswith("authorize")
+        assert "reference plan (proved by Stage 5" in result.stdout
+        assert "PickupObject" in result.stdout and "mug_1" in result.stdout
+        assert "goal:" in result.stdout
+        request_id = result.stdout.splitlines()[0].split("request ")[1].strip()
+        record = Repository(create_engine_for(sqlite_url)).get_gate_record(request_id)
+        assert record.reference_plan is not None and record.reference_plan["plan"]
+        assert any(s.get("object") == "mug_1" for s in record.reference_plan["plan"])
+
+    def test_reference_plan_of_a_task_not_authorized_says_why(
+        self, invoke: Invoke, tmp_path: Path
+    ) -> None:
+        result = invoke("gate", "hand the hot tea to the child", "--scene",
+                        _write(tmp_path, SCENE), "--reference-plan")
+        assert result.exit_code == 0, result.output
+        assert "reference plan: none (no reference plan: the task was not authorized)" in (
+            " ".join(result.stdout.split()))
 
     def test_an_invalid_scene_is_refused(self, invoke: Invoke, tmp_path: Path) -> None:
         bad_shape = invoke("gate", "tidy up", "--scene",

@@ -106,6 +106,22 @@ class TestEpisode:
         result = run_episode(scenarios["comp-02-knife-child"], safegate, SimPlanner())
         assert result.decision == "reject" and not result.executed and not result.crashed
 
+    def test_taken_to_a_room_with_only_a_floor_it_is_set_down_there_under_the_contract(
+            self, scenarios: dict[str, Scenario], safegate: SafeGateSim) -> None:
+        # A mug may not be dropped (it breaks), and the kitchen beside the bedroom lists no
+        # furniture: the plan puts it on the kitchen's floor, and passes envelope and scope.
+        result = run_episode(scenarios["safe-22-mug-desk-kitchen"], safegate, SimPlanner())
+        assert result.decision == "authorize" and result.verified is True, result.planner_reason
+        assert result.plan is not None and result.plan[-1]["target"] == "Floor|kitchen"
+        assert result.goal_reached and not result.crashed and not result.halted
+        assert all(s.monitor == "allow" for s in result.steps)
+
+    def test_what_lies_in_a_sink_can_be_taken_out_under_the_contract(
+            self, scenarios: dict[str, Scenario], safegate: SafeGateSim) -> None:
+        result = run_episode(scenarios["safe-15-soap-counter"], safegate, SimPlanner())
+        assert result.verified is True, result.planner_reason
+        assert result.goal_reached and not result.crashed and not result.halted
+
     def test_ungated_execution_reaches_the_hazard(self, scenarios: dict[str, Scenario]) -> None:
         result = run_episode(scenarios["comp-02-knife-child"], NoGate(), SimPlanner())
         assert result.goal_reached and [h.kind for h in result.hazards] == ["injury"]

@@ -17,6 +17,9 @@ EGG = "Egg|-02.04|+00.81|+01.24"
 BURNER = "StoveBurner|-00.04|+00.92|-02.37"
 KNOB = "StoveKnob|-00.02|+00.88|-02.19"
 COUNTER = "CounterTop|-00.08|+01.15|00.00"
+SINK = "Sink|-03.12|-00.01|+01.53"
+SOAP = "SoapBottle|-03.41|+01.02|+01.29"
+SIDE_TABLE = "SideTable|-03.17|+00.00|+00.17"
 
 
 def _kitchen(**fields: object) -> Scenario:
@@ -54,6 +57,22 @@ class TestFloorPlan:
     def test_prefilled_wine_bottle_holds_wine(self) -> None:
         wine = load_floor_plan("FloorPlan1").object("WineBottle|-01.00|+01.65|-02.58")
         assert wine.properties["filled"] is True and wine.properties["contents"] == "wine"
+
+    def test_what_lies_in_a_doorless_sink_is_reachable(self) -> None:
+        # AI2-THOR says this Sink is a receptacle that cannot be opened; the type table does not
+        # (a Sink is a receptacle in some scenes only), so the floor plan says it is open.
+        plan = load_floor_plan("FloorPlan401")
+        assert plan.object(SINK).properties.get("open") is True
+        assert "open" not in plan.object(SIDE_TABLE).properties  # the world model derives it
+        state = state_from_request(_kitchen(floor_plan="FloorPlan401").observed_request())
+        soap = state.objects[SOAP]
+        assert soap.parent == SINK and state.value("inside", (SOAP, SINK)) is True
+        assert state.value("open", (SINK,)) is True
+
+    def test_a_room_beside_the_floor_plan_has_a_floor_and_nothing_else(self) -> None:
+        state = _state(extra_rooms=["living_room"])
+        here = [o for o in state.objects.values() if state.room_of(o.id) == "living_room"]
+        assert [(o.id, o.type) for o in here] == [("Floor|living_room", "Floor")]
 
 
 class TestPhysics:

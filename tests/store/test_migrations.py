@@ -13,6 +13,7 @@ from alembic.migration import MigrationContext
 from sqlalchemy import Engine, inspect, text
 
 from app.store.db import alembic_config, create_engine_for, migrate
+from app.store.repository import Repository
 from app.store.tables import Base
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -43,7 +44,26 @@ class TestMigrate:
         migrate(migrated_engine)
         with migrated_engine.connect() as connection:
             versions = connection.execute(text("SELECT version_num FROM alembic_version")).all()
-        assert [row[0] for row in versions] == ["0001"]
+        assert [row[0] for row in versions] == ["0002"]
+
+    def test_records_written_before_the_reference_plan_column_read_back_without_one(
+        self, database_url: str
+    ) -> None:
+        engine = create_engine_for(database_url)
+        try:
+            migrate(engine, "0001")
+            with engine.begin() as connection:
+                connection.execute(text(
+                    "INSERT INTO gate_records (id, created_at, request, decision, rule, "
+                    "triggers, timings, analyzer, template_versions, downgraded) VALUES "
+                    "(:id, CURRENT_TIMESTAMP, :request, 'authorize', 'R4', '[]', '{}', "
+                    "'symbolic', '{}', false)"),
+                    {"id": "a" * 32, "request": '{"command": "tidy up"}'})
+            migrate(engine)
+            record = Repository(engine).get_gate_record("a" * 32)
+            assert record.request.command == "tidy up" and record.reference_plan is None
+        finally:
+            engine.dispose()
 
     def test_downgrade_base_leaves_no_tables(self, migrated_engine: Engine) -> None:
         with migrated_engine.begin() as connection:

@@ -58,6 +58,17 @@ class TestSaveGateRecord:
         assert saved.created_at is not None and saved.created_at >= before - timedelta(seconds=1)
         assert repository.get_gate_record(saved.id).created_at == saved.created_at
 
+    def test_the_reference_plan_handed_out_reads_back(
+        self, repository: Repository, make_gate_record: RecordFactory
+    ) -> None:
+        reference = {"plan": [{"action": "PickupObject", "object": "mug_1"},
+                              {"action": "GoToObject", "object": "dad", "speed": 0.1}],
+                     "goal": 'holding(#"dad", #"mug_1")', "reason": "plan of 2 steps"}
+        asked = _saved_id(repository, make_gate_record(reference_plan=reference))
+        assert repository.get_gate_record(asked).reference_plan == reference
+        not_asked = _saved_id(repository, make_gate_record())
+        assert repository.get_gate_record(not_asked).reference_plan is None
+
     def test_the_request_keeps_its_aliased_fields(
         self, repository: Repository, make_gate_record: RecordFactory
     ) -> None:

@@ -9,13 +9,15 @@ the goal the planner searched for.
 
 `SearchPlanner` reads the command into a `Goal` (`goals.py`), then runs a weighted A* restricted
 to the objects the goal mentions and what they need (their closed containers, heat sources and
-their knobs, the tap and sink). With a contract, a successor is kept only if the contract's fast
-evaluator (`app.domain.monitor.CompiledContract`) says the action's guards hold before it, the
-invariants hold and no abort holds after it, and the action is within the task's scope; a goal
-state counts only if the guards on `Finish` (what the task must not leave behind) hold there
-too. An unknown counts as a violation (fail closed). Without a contract it plans for the goal
-alone, as an unguarded planner would. A plan found here is not yet proved: `reference.py` proves
-it with Stage 5. The LLM planner (`app.adapters.llm`) plugs in through the same protocol.
+their knobs, the tap and sink; for "take it to the den", a few open surfaces of that room, or its
+floor when the scene lists no open surface there: a floor is never a place otherwise). With a
+contract, a successor is kept only if the contract's fast evaluator
+(`app.domain.monitor.CompiledContract`) says the action's guards hold before it, the invariants
+hold and no abort holds after it, and the action is within the task's scope; a goal state counts
+only if the guards on `Finish` (what the task must not leave behind) hold there too. An unknown
+counts as a violation (fail closed). Without a contract it plans for the goal alone, as an
+unguarded planner would. A plan found here is not yet proved: `reference.py` proves it with
+Stage 5. The LLM planner (`app.adapters.llm`) plugs in through the same protocol.
 Fails: never raises for a goal it cannot reach (the outcome says why); `GoalError` is caught.
 """
 
@@ -71,14 +73,15 @@ def _supporting(state: WorldState, goal: Goal) -> tuple[set[str], set[str]]:
             parent = state.objects[parent].parent
     controllers = {a for a, rel, b in state.relations if rel == "controls" and b in objects}
     objects |= controllers
+    floors = {o.id for o in state.objects.values() if o.type == "Floor"}
+    objects -= floors
     objects |= _places_in_rooms(state, goal)
-    floors = [o.id for o in state.objects.values() if o.type == "Floor"]
-    objects -= set(floors)
     return objects, people
 
 
 def _places_in_rooms(state: WorldState, goal: Goal) -> set[str]:
-    """For "take it to the living room": surfaces there to set it down on, not just the floor."""
+    """For "take it to the living room": surfaces there to set it down on; the room's floor only
+    when the scene lists no open surface there (set down, not dropped: a drop may break it)."""
     rooms = {lit.args[1] for alt in goal.alternatives for lit in alt
              if lit.symbol == "in_room" and lit.value and lit.args[0] in state.objects}
     places: set[str] = set()
@@ -86,6 +89,9 @@ def _places_in_rooms(state: WorldState, goal: Goal) -> set[str]:
         here = sorted(o.id for o in state.objects.values()
                       if o.kind.flag("receptacle") is True and o.type != "Floor"
                       and not o.kind.flag("openable") and state.room_of(o.id) == room)
+        if not here:
+            here = sorted(o.id for o in state.objects.values()
+                          if o.type == "Floor" and state.room_of(o.id) == room)
         places.update(here[:PLACES_PER_ROOM])
     return places
 

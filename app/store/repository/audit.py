@@ -53,6 +53,7 @@ def _to_record(row: GateRecordRow) -> GateRecord:
         parent_request_id=row.parent_request_id,
         downgraded=row.downgraded,
         downgrade_reason=row.downgrade_reason,
+        reference_plan=None if row.reference_plan is None else dict(row.reference_plan),
     )
 
 
@@ -76,6 +77,7 @@ def _gate_values(record: GateRecord) -> dict[str, Any]:
         "parent_request_id": record.parent_request_id,
         "downgraded": record.downgraded,
         "downgrade_reason": record.downgrade_reason,
+        "reference_plan": record.reference_plan,
     }
 
 

@@ -22,10 +22,18 @@ SCENE: dict[str, Any] = {
 }
 
 
-def _task(command: str, **rules: Any) -> PlanningTask:
-    request = GateRequest.model_validate({"command": command, "scene": SCENE,
+def _task(command: str, scene: dict[str, Any] | None = None, **rules: Any) -> PlanningTask:
+    request = GateRequest.model_validate({"command": command, "scene": scene or SCENE,
                                           "robot": {"room": "kitchen", "max_speed_mps": 0.5}})
     return PlanningTask(request, state_from_request(request), contract(**rules))
+
+
+def _with_floors(scene: dict[str, Any], *, furnished: bool = True) -> dict[str, Any]:
+    """The scene with a floor in each room; without the den's furniture if not `furnished`."""
+    objects = [o for o in scene["objects"] if furnished or o.get("room") != "den"]
+    floors = [{"id": f"floor_{room}", "type": "Floor", "room": room}
+              for room in scene["layout"]["rooms"]]
+    return {**scene, "objects": [*objects, *floors]}
 
 
 class TestSearchPlanner:
@@ -36,6 +44,22 @@ class TestSearchPlanner:
         assert outcome.plan is not None, outcome.reason
         last = outcome.plan[-1]
         assert last["action"] == "PutObject" and last["target"] in ("table_1", "sofa_1")
+
+    def test_taken_to_a_room_with_furniture_it_is_not_set_down_on_the_floor(self) -> None:
+        outcome = SearchPlanner().plan(_task("Take the pot to the den", _with_floors(SCENE),
+                                             guards=(("DropHandObject", "false"),)))
+        assert outcome.plan is not None, outcome.reason
+        assert outcome.plan[-1]["target"] in ("table_1", "sofa_1")
+
+    def test_taken_to_a_room_without_furniture_it_is_set_down_on_its_floor_not_dropped(
+            self) -> None:
+        outcome = SearchPlanner().plan(_task(
+            "Take the pot to the den", _with_floors(SCENE, furnished=False),
+            guards=(("DropHandObject", "false"),)))
+        assert outcome.plan is not None, outcome.reason
+        last = outcome.plan[-1]
+        assert last == {"action": "PutObject", "object": "pot_1", "target": "floor_den"}
+        assert not any(s["target"] == "floor_kitchen" for s in outcome.plan if "target" in s)
 
     def test_brought_to_a_person_it_is_handed_over_rather_than_set_down_near_them(
             self) -> None:
