@@ -105,62 +105,45 @@ def negate(inner: Compiled) -> Compiled:
 
 def conjunction(left: Compiled, right: Compiled) -> Compiled:
     """Kleene `and`: False if either side is False, else unknown if either is unknown."""
-    if left.is_constant and right.is_constant:
-        values = (left.constant, right.constant)
-        return constant(False if False in values else None if None in values else True)
-    if right.is_constant:
-        left, right = right, left
-    if left.is_constant:
-        if left.constant is not None:
-            return right if left.constant else constant(False)
-        only = right.code
-
-        def unknown_and(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-            return False if only(facts, args, env) is False else None
-
-        return Compiled(unknown_and)
-    first, second = left.code, right.code
-
-    def both(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-        a = first(facts, args, env)
-        if a is False:
-            return False
-        b = second(facts, args, env)
-        if b is False:
-            return False
-        return None if a is None or b is None else True
-
-    return Compiled(both, connective=Connective(left, right, (False, False, False, False), True))
+    return _kleene(left, right, dominant=False)
 
 
 def disjunction(left: Compiled, right: Compiled) -> Compiled:
     """Kleene `or`: True if either side is True, else unknown if either is unknown."""
+    return _kleene(left, right, dominant=True)
+
+
+def _kleene(left: Compiled, right: Compiled, *, dominant: bool) -> Compiled:
+    """`and` (dominant False) or `or` (dominant True): the dominant value if either side has
+    it, else unknown if either side is unknown, else the other value. A constant side folds
+    away; a quantifier over the result reads its `Connective` to inline it."""
+    other = not dominant
     if left.is_constant and right.is_constant:
         values = (left.constant, right.constant)
-        return constant(True if True in values else None if None in values else False)
+        return constant(dominant if dominant in values else None if None in values else other)
     if right.is_constant:
         left, right = right, left
     if left.is_constant:
         if left.constant is not None:
-            return constant(True) if left.constant else right
+            return constant(dominant) if bool(left.constant) is dominant else right
         only = right.code
 
-        def unknown_or(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-            return True if only(facts, args, env) is True else None
+        def unknown_unless(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+            return dominant if only(facts, args, env) is dominant else None
 
-        return Compiled(unknown_or)
+        return Compiled(unknown_unless)
     first, second = left.code, right.code
 
-    def either(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+    def kleene(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
         a = first(facts, args, env)
-        if a is True:
-            return True
+        if a is dominant:
+            return dominant
         b = second(facts, args, env)
-        if b is True:
-            return True
-        return None if a is None or b is None else False
+        if b is dominant:
+            return dominant
+        return None if a is None or b is None else other
 
-    return Compiled(either, connective=Connective(left, right, (True, True, True, True), False))
+    return Compiled(kleene, connective=Connective(left, right, (dominant,) * 4, other))
 
 
 def implication(left: Compiled, right: Compiled) -> Compiled:
