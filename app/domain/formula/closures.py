@@ -132,36 +132,35 @@ def _kleene(left: Compiled, right: Compiled, *, dominant: bool) -> Compiled:
             return dominant if only(facts, args, env) is dominant else None
 
         return Compiled(unknown_unless)
-    first, second = left.code, right.code
-
-    def kleene(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-        a = first(facts, args, env)
-        if a is dominant:
-            return dominant
-        b = second(facts, args, env)
-        if b is dominant:
-            return dominant
-        return None if a is None or b is None else other
-
-    return Compiled(kleene, connective=Connective(left, right, (dominant,) * 4, other))
+    return _decided_by_either(left, right, dominant, dominant, gives=dominant)
 
 
 def implication(left: Compiled, right: Compiled) -> Compiled:
     """Kleene `->`: True if the premise is False or the conclusion True."""
     if left.is_constant or right.is_constant:
         return disjunction(negate(left), right)
+    return _decided_by_either(left, right, False, True, gives=True)
+
+
+def _decided_by_either(left: Compiled, right: Compiled, first_decides: bool,
+                       second_decides: bool, *, gives: bool) -> Compiled:
+    """Two non-constant sides: `gives` as soon as the first `is` `first_decides` or the second
+    `is` `second_decides` (the second is not evaluated when the first decides), else unknown if
+    either side is, else `not gives`. The `Connective` lets a quantifier inline it."""
     first, second = left.code, right.code
+    otherwise = not gives
 
-    def implies(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+    def connective(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
         a = first(facts, args, env)
-        if a is False:
-            return True
+        if a is first_decides:
+            return gives
         b = second(facts, args, env)
-        if b is True:
-            return True
-        return None if a is None or b is None else False
+        if b is second_decides:
+            return gives
+        return None if a is None or b is None else otherwise
 
-    return Compiled(implies, connective=Connective(left, right, (False, True, True, True), False))
+    return Compiled(connective, connective=Connective(
+        left, right, (first_decides, gives, second_decides, gives), otherwise))
 
 
 def strict(left: Compiled, right: Compiled, op: Callable[[Any, Any], Any]) -> Compiled:
