@@ -8,7 +8,6 @@ these tests also check that their spans come back and hang under the request tha
 from __future__ import annotations
 
 import json
-import logging
 import socket
 import subprocess
 import sys
@@ -17,7 +16,6 @@ import time
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import httpx
 import pytest
@@ -28,9 +26,9 @@ from opentelemetry.sdk.trace.export import SpanExporter, SpanExportResult
 from opentelemetry.sdk.trace.export.in_memory_span_exporter import InMemorySpanExporter
 from websockets.sync.client import connect
 
-from app.api.logs import JsonLogFormatter
 from app.config import Settings
 from app.main import create_app
+from tests.api.conftest import LogLines
 from tests.api.test_verify_api import GOOD_PLAN, KNIFE_REQUEST
 
 REPO = Path(__file__).resolve().parents[2]
@@ -82,25 +80,6 @@ def traced(tmp_path_factory: pytest.TempPathFactory) -> Iterator[TracedServer]:
     exporter = InMemorySpanExporter()
     settings = Settings(database_url=f"sqlite:///{database}", otel_enabled=True, gate_workers=1)
     yield from _serve(create_app(settings, span_exporter=exporter), exporter)
-
-
-@pytest.fixture
-def lines() -> Iterator[list[dict[str, Any]]]:
-    """The JSON lines SafeGate logs, formatted where they are emitted (as on stderr)."""
-    entries: list[dict[str, Any]] = []
-
-    class Collect(logging.Handler):
-        def emit(self, record: logging.LogRecord) -> None:
-            entries.append(json.loads(JsonLogFormatter().format(record)))
-
-    handler = Collect(logging.INFO)
-    logger = logging.getLogger("safegate")
-    previous = logger.level
-    logger.addHandler(handler)
-    logger.setLevel(logging.INFO)
-    yield entries
-    logger.removeHandler(handler)
-    logger.setLevel(previous)
 
 
 def _children(parent: ReadableSpan, spans: Sequence[ReadableSpan]) -> list[ReadableSpan]:
@@ -161,12 +140,12 @@ class TestGateSpans:
         assert [s.name for s in _children(request, traced.spans())] == GATE_STAGES[:3]
 
     def test_the_access_line_carries_the_request_spans_trace_id(
-            self, traced: TracedServer, lines: list[dict[str, Any]]) -> None:
+            self, traced: TracedServer, lines: LogLines) -> None:
         response = httpx.post(traced.base_url + "/gate", json=KNIFE_REQUEST, timeout=60)
         request = _request_span(traced, "POST /gate", response.headers["X-Request-ID"])
-        access = [e for e in lines if e.get("event") == "http_request"
-                  and e.get("request_id") == response.headers["X-Request-ID"]]
-        assert len(access) == 1, lines
+        access = [e for e in lines.of("safegate.access")
+                  if e.get("request_id") == response.headers["X-Request-ID"]]
+        assert len(access) == 1, lines.entries
         assert request.context is not None
         assert access[0]["trace_id"] == format(request.context.trace_id, "032x")
         assert access[0]["span_id"] == format(request.context.span_id, "016x")
