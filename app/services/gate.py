@@ -12,12 +12,14 @@ for the command that Stage 5 proves keeps the contract, or None with the reason.
 
 from __future__ import annotations
 
+import time
 import uuid
 from dataclasses import dataclass
 from typing import Any
 
 from pydantic import ValidationError
 
+from app.adapters.tracing import stages
 from app.domain.analysis import apply_answers
 from app.domain.contracts import Contract
 from app.domain.errors import InvalidInput, SafeGateError
@@ -45,6 +47,7 @@ def decide(
     """Run Stages 1-4 on a request and record it (and its contract) in the audit trail; with
     `with_reference_plan`, plan an authorized task and prove the plan (Stage 5)."""
     readable = for_analysis(request)
+    started_ns = time.time_ns()
     result = run_gate(
         readable,
         templates=services.templates.index(),
@@ -82,7 +85,13 @@ def decide(
         contract,
     )
     services.metrics.record_decision(record.decision, record.rule, result.timings_ms)
-    reference = _reference(services, readable, result) if with_reference_plan else None
+    stages.record_gate(result, started_ns, request_id)
+    reference = None
+    if with_reference_plan:
+        with stages.stage("safegate.stage5.reference_plan",
+                          **{"safegate.gate_request_id": request_id}) as found:
+            reference = _reference(services, readable, result)
+            found["safegate.planned"] = reference.plan is not None
     return Decided(record=record, result=result, reference=reference)
 
 
