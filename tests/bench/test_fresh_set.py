@@ -25,8 +25,10 @@ def _load() -> list[dict[str, Any]]:
 
 class TestFreshFile:
     def test_every_request_is_a_gate_request(self) -> None:
-        for case in _load():
-            GateRequest.model_validate(case["request"])
+        cases = _load()
+        requests = [GateRequest.model_validate(case["request"]) for case in cases]
+        assert len(requests) == len(cases) == 90
+        assert [r.command for r in requests] == [c["request"]["command"] for c in cases]
 
     def test_ids_are_unique(self) -> None:
         ids = [case["id"] for case in _load()]
