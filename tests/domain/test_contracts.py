@@ -11,18 +11,7 @@ import pytest
 from app.domain.binding import BoundHazard, BoundTemplate
 from app.domain.contracts import compile_contract, planner_constraints
 from app.domain.errors import FormulaError
-from app.domain.models import (
-    Category,
-    Confidence,
-    HazardProposal,
-    HazardTemplate,
-    Level,
-    Preventability,
-    Severity,
-    TemplateCondition,
-    TemplateVariable,
-    VariableType,
-)
+from app.domain.models import HazardProposal, HazardTemplate
 from app.domain.scope import TaskScope
 
 HOT_CARRY = "holding(robot, $obj) and hot($obj) -> speed(robot) <= $carry_speed"
@@ -30,33 +19,28 @@ NO_HOT_HANDOVER = "@object != $obj or not hot($obj)"
 CHILD_HOLDS_IT = "not (child($person) and holding($person, $obj))"
 
 
-def hot_drink(version: int = 1, **changes: Any) -> HazardTemplate:
-    fields: dict[str, Any] = {
-        "id": "thermal.hot_drink", "name": "Hot drink", "category": Category.PHYSICAL,
-        "hazard_class": "scald_hot_liquid", "description": "A hot drink near people.",
-        "severity": Severity.HIGH, "preventability": Preventability.PREVENTABLE,
-        "version": version,
-        "variables": (TemplateVariable(name="obj", type=VariableType.OBJECT),
-                      TemplateVariable(name="person", type=VariableType.PERSON),
-                      TemplateVariable(name="carry_speed", type=VariableType.NUMBER,
-                                       default=0.3)),
-        "invariants": (TemplateCondition(id="slow_carry", formula=HOT_CARRY,
-                                         description="Carry it slowly."),),
-        "guards": (TemplateCondition(id="no_handover", formula=NO_HOT_HANDOVER,
-                                     description="Do not hand it over.",
-                                     action="HandoverObject"),),
-        "aborts": (TemplateCondition(id="child_holds_it", formula=CHILD_HOLDS_IT,
-                                     description="Halt if a child holds it."),),
-    }
-    return HazardTemplate(**(fields | changes))
+def template(template_id: str, **fields: Any) -> HazardTemplate:
+    return HazardTemplate.model_validate({
+        "id": template_id, "name": template_id, "category": "physical",
+        "hazard_class": "scald_hot_liquid", "description": "A hazard.", "severity": "high",
+        "preventability": "preventable", **fields})
 
 
-BASELINE = HazardTemplate(
-    id="baseline.speed", name="Speed cap", category=Category.PHYSICAL,
-    hazard_class="collision", description="Never fast.", severity=Severity.MODERATE,
-    preventability=Preventability.PREVENTABLE,
-    invariants=(TemplateCondition(id="cap", formula="speed(robot) <= 1.0",
-                                  description="Never faster than 1 m/s."),))
+def hot_drink(**changes: Any) -> HazardTemplate:
+    return template("thermal.hot_drink", **{
+        "variables": [{"name": "obj", "type": "object"}, {"name": "person", "type": "person"},
+                      {"name": "carry_speed", "type": "number", "default": 0.3}],
+        "invariants": [{"id": "slow_carry", "formula": HOT_CARRY,
+                        "description": "Carry it slowly."}],
+        "guards": [{"id": "no_handover", "formula": NO_HOT_HANDOVER,
+                    "description": "Do not hand it over.", "action": "HandoverObject"}],
+        "aborts": [{"id": "child_holds_it", "formula": CHILD_HOLDS_IT,
+                    "description": "Halt if a child holds it."}],
+        **changes})
+
+
+BASELINE = template("baseline.speed", invariants=[
+    {"id": "cap", "formula": "speed(robot) <= 1.0", "description": "Never faster than 1 m/s."}])
 
 
 def bound(template: HazardTemplate, **bindings: Any) -> BoundTemplate:
@@ -65,10 +49,10 @@ def bound(template: HazardTemplate, **bindings: Any) -> BoundTemplate:
 
 
 def hazard(*matches: BoundTemplate) -> BoundHazard:
-    proposal = HazardProposal(
-        level=Level.DEPLOYMENT, category=Category.PHYSICAL, hazard_class="scald_hot_liquid",
-        mechanism="hot coffee near a child", entities={"obj": "mug_1"}, severity=Severity.HIGH,
-        preventability=Preventability.PREVENTABLE, confidence=Confidence.CERTAIN)
+    proposal = HazardProposal.model_validate({
+        "level": "deployment", "category": "physical", "hazard_class": "scald_hot_liquid",
+        "mechanism": "hot coffee near a child", "entities": {"obj": "mug_1"},
+        "severity": "high", "preventability": "preventable", "confidence": "certain"})
     return BoundHazard(proposal=proposal, matches=matches)
 
 
@@ -121,8 +105,8 @@ class TestCompileContract:
     @pytest.mark.parametrize("formula", ["glows($obj)", "holding(robot, $obj) and",
                                          "hot($carry_speed)"])
     def test_a_condition_that_does_not_check_is_refused(self, formula: str) -> None:
-        broken = hot_drink(invariants=(TemplateCondition(id="broken", formula=formula,
-                                                         description="broken"),))
+        broken = hot_drink(invariants=[{"id": "broken", "formula": formula,
+                                        "description": "broken"}])
         with pytest.raises(FormulaError):
             compile_contract([hazard(bound(broken, obj="mug_1", person="kid",
                                            carry_speed=0.3))])
