@@ -18,7 +18,8 @@ from pathlib import Path
 from typing import Any
 
 from app.domain.models import GateRequest
-from bench.cases.kit import Case, CaseError, Json, read_cases
+from bench.cases.case_files import read_cases
+from bench.cases.kit import Case, CaseError, Json
 from bench.cases.validate import check_case, normalized_command
 
 HERE = Path(__file__).parent

@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 
 from bench.cases.build_benchmark import DATA
-from bench.cases.kit import Case, CaseError, read_cases
+from bench.cases.case_files import read_cases
+from bench.cases.kit import Case, CaseError
 from bench.cases.validate import check_case
 
 CASE_FILES = sorted(DATA.glob("*.yaml"))
