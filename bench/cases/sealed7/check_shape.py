@@ -11,7 +11,6 @@ Usage: python3 check_shape.py            # checks homes7 and guests7 next to thi
 """
 import json
 import os
-import re
 import sys
 from collections import Counter
 
