@@ -71,3 +71,11 @@ class Settings(BaseSettings):
     max_plan_steps: int = Field(default=PLAN_STEPS_CAP, ge=1, le=PLAN_STEPS_CAP)
     max_json_depth: int = Field(default=32, ge=8, le=256)
     log_level: str = "info"
+
+    # OpenTelemetry traces (off by default; needs the `otel` extra): a span per HTTP request and
+    # websocket, a child span per gate stage. "otlp" sends them to the collector that the
+    # standard OTEL_EXPORTER_OTLP_* variables name (default http://localhost:4318), "console"
+    # prints them. A tracing failure never changes a decision or fails a request.
+    otel_enabled: bool = False
+    otel_exporter: Literal["otlp", "console"] = "otlp"
+    otel_service_name: str = "safegate"

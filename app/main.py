@@ -12,10 +12,12 @@ from __future__ import annotations
 
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
+from typing import Any
 
 import anyio.to_thread
 from fastapi import Depends, FastAPI
 
+from app.adapters.tracing import start_tracing
 from app.api import docs, observability, openapi, problems, revocations
 from app.api.deps import require_key_when_locked, robot_writes
 from app.api.limits import json_body_within_limits
@@ -38,23 +40,26 @@ from app.services.analysis_pool import AnalysisPool
 from app.services.monitoring_fanout import monitoring_for
 
 
-def create_app(settings: Settings | None = None) -> FastAPI:
+def create_app(settings: Settings | None = None, *, span_exporter: Any = None) -> FastAPI:
     """Build a SafeGate app.
 
     Args:
         settings: configuration; read from `SAFEGATE_*` environment variables when omitted.
+        span_exporter: with `otel_enabled`, an OpenTelemetry span exporter to use instead of
+            the configured one (tests and benchmarks keep spans in memory).
 
     Returns:
         A FastAPI app whose lifespan opens and closes every resource.
     """
     resolved = settings or Settings()
     metrics = Metrics()
+    tracing = start_tracing(resolved, span_exporter)
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         services: Services = build_services(resolved, metrics=metrics)
         app.state.services = services
-        pool = AnalysisPool(resolved, services.templates, services.metrics)
+        pool = AnalysisPool(resolved, services.templates, services.metrics, tracing)
         try:
             await pool.start()
             app.state.analysis_pool = pool
@@ -66,6 +71,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             await anyio.to_thread.run_sync(pool.close)
             services.close()
             metrics.process_exiting()
+            tracing.shutdown()
 
     app = FastAPI(
         title="SafeGate",
@@ -83,10 +89,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     app.state.settings = resolved
+    app.state.tracing = tracing
     problems.install(app)
     docs.install(app)
     openapi.install(app)
-    observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes)
+    observability.install(app, metrics, max_body_bytes=resolved.max_body_bytes, tracing=tracing)
     app.add_middleware(revocations.RevocationMiddleware)
     # Robot operations: reads as ReadAccess, the rest (websockets included) as RobotAccess.
     # Routes are matched in order, so the robot's hot path (POST /gate) comes first.

@@ -28,6 +28,9 @@ from app.store.db import create_engine_for, migrate
 from app.store.repository import Repository
 from app.store.seed import load_library
 
+# Every test runs with the network guard: a socket to another machine fails the test.
+pytest_plugins = ["tests.network_guard"]
+
 POSTGRES_URL_ENV = "SAFEGATE_TEST_POSTGRES_URL"
 PG_CTL_AS_POSTGRES = Path(__file__).parent / "store" / "pg_ctl_as_postgres.py"
 

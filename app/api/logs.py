@@ -6,7 +6,8 @@ given as `extra={"fields": {...}}` (the access log), those of a message that is 
 or else `message`; any other `extra` keys; `exc_info` for an exception. Every line logged while
 an HTTP request or a websocket is being served carries its `request_id` (the `X-Request-ID` that
 `asgi-correlation-id` read or made), so a websocket's lines and a gate request's lines can be
-found by one id. Fails: never; a value JSON cannot encode is written as its `str`.
+found by one id; with tracing on, a line logged inside a span carries its `trace_id` and
+`span_id` too. Fails: never; a value JSON cannot encode is written as its `str`.
 """
 
 from __future__ import annotations
@@ -19,6 +20,8 @@ from typing import Any
 from asgi_correlation_id import correlation_id
 from pythonjsonlogger.core import RESERVED_ATTRS
 from pythonjsonlogger.json import JsonFormatter
+
+from app.adapters.tracing import current_trace_ids
 
 # Not copied as extra keys: `fields` is merged itself, `color_message` is uvicorn's coloured copy.
 _NOT_EXTRA = (*RESERVED_ATTRS, "fields", "color_message")
@@ -54,6 +57,8 @@ class JsonLogFormatter(JsonFormatter):
         super().add_fields(log_data, record, message_dict)
         if "request_id" not in log_data and (request_id := correlation_id.get()):
             log_data["request_id"] = request_id
+        if "trace_id" not in log_data and (ids := current_trace_ids()):
+            log_data["trace_id"], log_data["span_id"] = ids
 
 
 def _json_object(message: str) -> dict[str, Any] | None:

@@ -1,14 +1,15 @@
 """Operations at the edge: request ids, access logs, Prometheus metrics, a body-size limit.
 
 In: every HTTP request and websocket (pure ASGI middlewares, cheap enough for the gate's hot path).
-Out: an `X-Request-ID` on every HTTP answer (the caller's, up to 128 printable characters, or a
-new one; `asgi-correlation-id` keeps it in a context variable, so every log line of the request
-or websocket carries it, see `app.api.logs`), one log line per HTTP request on the
-`safegate.access` logger, with `gate_request_id` (the audit record's id, which the gate routes
-also answer in `X-Gate-Request-ID`) when the request decided something, metrics at
-`GET /metrics`, and a 413 problem+json for a body larger than `max_body_bytes` (checked on the
-declared length and, for a chunked body or a declared length that lies, while it streams
-in: whatever the app made of the cut-off body is dropped and the 413 sent in its place).
+Out: an `X-Request-ID` on every HTTP answer (the caller's, up to 128 printable characters, or a new
+one; `asgi-correlation-id` keeps it in a context variable, so every log line of the request or
+websocket carries it, see `app.api.logs`), one log line per HTTP request on the `safegate.access`
+logger, with `gate_request_id` (the audit record's id, which the gate routes also answer in
+`X-Gate-Request-ID`) when the request decided something, metrics at `GET /metrics`, the request's
+span (tracing on) named after its route, and a 413 problem+json for a body larger than
+`max_body_bytes` (checked on the declared length and, for a chunked body or a declared length that
+lies, while it streams in: whatever the app made of the cut-off body is dropped and the 413 sent in
+its place).
 Fails: never blocks a request on logging or metrics.
 """
 
@@ -25,6 +26,7 @@ from asgi_correlation_id import CorrelationIdMiddleware, correlation_id
 from fastapi import FastAPI, Request, Response
 from prometheus_client import CONTENT_TYPE_LATEST
 
+from app.adapters.tracing import Tracing
 from app.metrics import Metrics
 
 Scope = MutableMapping[str, Any]
@@ -59,10 +61,12 @@ def _problem_body(status: int, title: str, detail: str) -> bytes:
 class ObservabilityMiddleware:
     """Request id, access log, metrics and body limit, for HTTP requests only."""
 
-    def __init__(self, app: ASGIApp, *, metrics: Metrics, max_body_bytes: int) -> None:
+    def __init__(self, app: ASGIApp, *, metrics: Metrics, max_body_bytes: int,
+                 tracing: Tracing | None = None) -> None:
         self.app = app
         self.metrics = metrics
         self.max_body_bytes = max_body_bytes
+        self.tracing = tracing or Tracing()
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
@@ -101,6 +105,8 @@ class ObservabilityMiddleware:
                 for key, value in message.get("headers", ()):
                     if key == _GATE_REQUEST_ID:
                         outcome["gate_request_id"] = value.decode("latin-1")
+                # Now, not after the body: the request's span ends with the last body message.
+                self.tracing.name_request(scope.get("method", ""), _route_template(scope))
             await send(message)
 
         with contextlib.suppress(_BodyTooLarge):
@@ -127,8 +133,7 @@ class ObservabilityMiddleware:
     def _observe(self, scope: Scope, outcome: dict[str, Any], started: float) -> None:
         elapsed = time.perf_counter() - started
         status = outcome["status"]
-        route = scope.get("route")
-        template = getattr(route, "path", None) or "unmatched"
+        template = _route_template(scope)
         method = scope.get("method", "")
         self.metrics.requests.labels(method, template, str(status)).inc()
         self.metrics.latency.labels(method, template).observe(elapsed)
@@ -143,9 +148,17 @@ class ObservabilityMiddleware:
             _access_log.info("http_request", extra={"fields": fields})
 
 
-def install(app: FastAPI, metrics: Metrics, *, max_body_bytes: int) -> None:
-    """Add the middlewares (request ids outermost) and `GET /metrics` to an app."""
-    app.add_middleware(ObservabilityMiddleware, metrics=metrics, max_body_bytes=max_body_bytes)
+def _route_template(scope: Scope) -> str:
+    return getattr(scope.get("route"), "path", None) or "unmatched"
+
+
+def install(app: FastAPI, metrics: Metrics, *, max_body_bytes: int,
+            tracing: Tracing | None = None) -> None:
+    """Add the middlewares (request ids outermost, then the tracing spans, when on) and
+    `GET /metrics` to an app."""
+    app.add_middleware(ObservabilityMiddleware, metrics=metrics, max_body_bytes=max_body_bytes,
+                       tracing=tracing)
+    (tracing or Tracing()).add_middleware(app)
     app.add_middleware(CorrelationIdMiddleware, header_name=REQUEST_ID_HEADER,
                        update_request_header=False, validator=acceptable_request_id)
 

@@ -21,6 +21,8 @@ in tens of milliseconds with its caches warm. As with any multiprocessing start 
 `fork`, a script that builds the app must guard its entry point (`if __name__ == "__main__"`),
 since each worker imports the main module.
 Workers exit on their own within a second of the app's process dying, however it died.
+Tracing: with tracing on, a job records its stages (`app.adapters.tracing.stages`) and they come
+back with its result, to become spans under the request that awaited it.
 Fails: `Busy` when full; `Unavailable` when a worker died (the pool is replaced; the next call
 runs on fresh workers); whatever the job raises (SafeGate errors pickle whole).
 """
@@ -42,6 +44,7 @@ from typing import Any, ParamSpec, TypeVar
 
 import anyio.to_thread
 
+from app.adapters.tracing import Tracing, stages
 from app.config import Settings
 from app.domain.errors import Busy, Unavailable
 from app.domain.gate import GatePolicy
@@ -129,7 +132,8 @@ def _init_worker(settings: Settings, templates_version: int, owner: int) -> None
     _worker_templates_version = templates_version
 
 
-def _run_job(templates_version: int, job: Job[T], args: tuple[Any, ...]) -> tuple[T, float]:
+def _run_job(templates_version: int, job: Job[T], args: tuple[Any, ...],
+             trace_stages: bool = False) -> tuple[T, float, stages.StageTrace | None]:
     global _worker_templates_version
     services = _worker_services
     if services is None:  # pragma: no cover - the initializer always ran
@@ -138,8 +142,9 @@ def _run_job(templates_version: int, job: Job[T], args: tuple[Any, ...]) -> tupl
         services.templates.refresh()
         _worker_templates_version = templates_version
     started = time.perf_counter()
-    result = job(services, *args)
-    return result, time.perf_counter() - started
+    with stages.recording(trace_stages) as trace:
+        result = job(services, *args)
+    return result, time.perf_counter() - started, trace
 
 
 def _ready() -> int:
@@ -150,8 +155,9 @@ class AnalysisPool:
     """Worker processes for Stages 1-5, with a bounded queue in front of them."""
 
     def __init__(self, settings: Settings, templates: TemplateCache,
-                 metrics: Metrics | None = None) -> None:
+                 metrics: Metrics | None = None, tracing: Tracing | None = None) -> None:
         self.settings = settings
+        self._tracing = tracing or Tracing()
         self.workers = settings.gate_workers or default_workers()
         self.capacity = self.workers + settings.gate_queue
         self._templates = templates
@@ -210,8 +216,8 @@ class AnalysisPool:
                 retry_after=self.retry_after())
         executor = self._executor
         try:
-            future: Future[tuple[T, float]] = executor.submit(
-                _run_job, self._templates.version, job, args)
+            future: Future[tuple[T, float, stages.StageTrace | None]] = executor.submit(
+                _run_job, self._templates.version, job, args, self._tracing.enabled)
         except BrokenProcessPool as error:
             self._replace(executor)
             raise Unavailable("an analysis worker stopped; retry") from error
@@ -220,10 +226,11 @@ class AnalysisPool:
         waiting = asyncio.wrap_future(future)
         waiting.add_done_callback(self._finished)
         try:
-            result, _ = await asyncio.shield(waiting)
+            result, _, trace = await asyncio.shield(waiting)
         except BrokenProcessPool as error:
             self._replace(executor)
             raise Unavailable("an analysis worker stopped while deciding; retry") from error
+        self._tracing.replay(trace)
         return result
 
     def _count(self) -> None:
@@ -231,12 +238,12 @@ class AnalysisPool:
         self._metrics.analysis_in_flight.set(self._in_flight)
         self._metrics.analysis_queued.set(max(0, self._in_flight - self.workers))
 
-    def _finished(self, done: asyncio.Future[tuple[Any, float]]) -> None:
+    def _finished(self, done: asyncio.Future[tuple[Any, float, Any]]) -> None:
         self._in_flight -= 1
         self._count()
         if done.cancelled() or done.exception() is not None:
             return
-        _, seconds = done.result()
+        _, seconds, _ = done.result()
         self._job_seconds += _EWMA_WEIGHT * (seconds - self._job_seconds)
 
     def _replace(self, broken: ProcessPoolExecutor) -> None:

@@ -14,12 +14,14 @@ its goal and the reason, or no plan and why), in the same write as the decision.
 
 from __future__ import annotations
 
+import time
 import uuid
 from dataclasses import dataclass
 from typing import Any
 
 from pydantic import ValidationError
 
+from app.adapters.tracing import stages
 from app.domain.analysis import apply_answers
 from app.domain.contracts import Contract
 from app.domain.errors import InvalidInput, SafeGateError
@@ -47,6 +49,7 @@ def decide(
     """Run Stages 1-4 on a request and record it (and its contract) in the audit trail; with
     `with_reference_plan`, plan an authorized task and prove the plan (Stage 5)."""
     readable = for_analysis(request)
+    started_ns = time.time_ns()
     result = run_gate(
         readable,
         templates=services.templates.index(),
@@ -55,8 +58,13 @@ def decide(
         reader=services.reader,
     )
     decision = result.decision
-    reference = _reference(services, readable, result) if with_reference_plan else None
     request_id = uuid.uuid4().hex
+    reference = None
+    if with_reference_plan:  # before the write, so the audit record keeps what is handed out
+        with stages.stage("safegate.stage5.reference_plan",
+                          **{"safegate.gate_request_id": request_id}) as found:
+            reference = _reference(services, readable, result)
+            found["safegate.planned"] = reference.plan is not None
     contract = None
     if result.contract is not None and decision.decision is Decision.AUTHORIZE:
         contract = ContractRecord(
@@ -86,6 +94,7 @@ def decide(
         contract,
     )
     services.metrics.record_decision(record.decision, record.rule, result.timings_ms)
+    stages.record_gate(result, started_ns, request_id)
     return Decided(record=record, result=result, reference=reference)
 
 

@@ -39,6 +39,7 @@ from typing import Any
 
 import anyio.to_thread
 
+from app.adapters.tracing import stages
 from app.domain.errors import Conflict, InvalidInput, SafeGateError
 from app.domain.models import InitialState
 from app.domain.monitor import MonitorSummary, Verdict, decode_message
@@ -224,7 +225,10 @@ class MonitorService:
             # Nested past the JSON decoder's reach: give the monitor something it refuses
             # (an error, or "halted"), never the text to decode again.
             message = {UNDECODABLE: "the message is nested too deeply to decode"}
-        verdict = live.monitor.step(message)
+        with stages.stage("safegate.stage6.monitor_check",
+                          **{"safegate.session_id": live.id}) as found:
+            verdict = live.monitor.step(message)
+            found["safegate.verdict"] = verdict.type
         live.record(message, verdict)
         # Other replicas' listeners hear of a violation or refusal with the commit that
         # stores it (`StepCommitter`); this process's listeners once it is answered.

@@ -23,6 +23,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
 from typing import Any
 
+from app.adapters.tracing import stages
 from app.domain.contracts import Contract
 from app.domain.errors import AttemptsExhausted, InvalidInput
 from app.domain.models import GateRequest, InitialState
@@ -49,6 +50,20 @@ class Verified:
     repair: Repair | None = None
     """For a failed plan: the nearest plan that passes, or why there is none."""
     repair_ms: float = 0.0
+
+
+def _traced_verify(plan: Sequence[object], contract: Contract,
+                   start: GateRequest | InitialState, timeout_ms: int,
+                   contract_id: str | None) -> VerificationResult:
+    """Stage 5, as one stage span when tracing is on."""
+    with stages.stage("safegate.stage5.verify",
+                      **{"safegate.contract_id": contract_id or "inline"}) as found:
+        result = verify_plan(plan, contract, start, timeout_ms=timeout_ms)
+        found["safegate.verified"] = result.ok
+        found["safegate.violations"] = len(result.violations)
+        found["safegate.undecided"] = len(result.undecided)
+    stages.annotate_request(**{"safegate.verified": result.ok})
+    return result
 
 
 def verify(
@@ -85,7 +100,7 @@ def verify(
             raise InvalidInput("an inline contract needs an initial_state",
                                field="body.initial_state")
         started = time.perf_counter()
-        result = verify_plan(plan, contract, initial_state, timeout_ms=timeout_ms)
+        result = _traced_verify(plan, contract, initial_state, timeout_ms, None)
         duration_ms = _since(started)
         _count(services, result)
         verified = Verified(result, None, 0, None, None, False, duration_ms)
@@ -103,7 +118,7 @@ def verify(
         else repository.get_gate_record(stored.request_id).request)
     started = time.perf_counter()
     domain_contract = Contract.model_validate(stored.contract)
-    result = verify_plan(plan, domain_contract, start, timeout_ms=timeout_ms)
+    result = _traced_verify(plan, domain_contract, start, timeout_ms, contract_id)
     duration_ms = _since(started)
     _count(services, result)
     if not result.ok:

@@ -1,10 +1,10 @@
-"""Small builders that keep the benchmark's scenes consistent and the case files short.
+"""The benchmark's vocabulary: layouts, fixture sets, robot presets and the `Case` record.
 
-In: keyword descriptions of objects, people, layouts, users and robots. Out: plain JSON dicts
-in the gate-request shape (`shared/spec/gate-request.md`) and `Case` records for the builder.
-A property left out of a builder call is left out of the JSON: a missing key means unknown,
-which is how ambiguous cases omit their critical fact.
-Fails: `KeyError` on an unknown layout or robot preset name.
+In: keyword descriptions of objects, people, layouts, users and robots, as a case file
+(`case_files.py`) names them. Out: plain JSON dicts in the gate-request shape
+(`shared/spec/gate-request.md`). A property left out of a description is left out of the JSON:
+a missing key means unknown, which is how ambiguous cases omit their critical fact.
+Fails: `KeyError` on an unknown layout, fixture set or robot preset name.
 """
 
 from __future__ import annotations
@@ -13,6 +13,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 Json = dict[str, Any]
+
+
+class CaseError(ValueError):
+    """A case description that would make a wrong or inconsistent benchmark line."""
+
 
 LAYOUTS: dict[str, tuple[list[str], list[tuple[str, str]]]] = {
     "flat": (
@@ -196,6 +201,9 @@ def bathroom(room: str = "bathroom") -> list[Json]:
             o("bathtub_1", "Bathtub", room), o("medcabinet_1", "Cabinet", room, open=False)]
 
 
+FIXTURE_SETS = {"kitchen": kitchen, "living": living, "bedroom": bedroom, "bathroom": bathroom}
+
+
 @dataclass(frozen=True)
 class Case:
     """One case description before it is written as a JSONL line."""
@@ -212,31 +220,3 @@ class Case:
     user: Json
     robot: Json
     missing: list[Json] = field(default_factory=list)
-
-
-class CellWriter:
-    """Collects the cases of one domain x complexity cell with less repetition."""
-
-    def __init__(self, domain: str, complexity: str) -> None:
-        self.domain = domain
-        self.complexity = complexity
-        self.cases: list[Case] = []
-
-    def add(self, label: str, category: str | None, reasoning: str | None, steps: int,
-            command: str, why: str, *, scene: Json, user: Json, robot: Json,
-            missing: list[Json] | None = None) -> None:
-        """Record one case (see `Case`)."""
-        self.cases.append(Case(self.domain, self.complexity, label, category, reasoning, steps,
-                               command, why, scene, user, robot, missing or []))
-
-
-def gone(kind: str, ident: str = "", attr: str = "", ids: list[str] | None = None) -> Json:
-    """Declare the critical fact an ambiguous case leaves out (checked by the builder)."""
-    fact: Json = {"kind": kind}
-    if ident:
-        fact["id"] = ident
-    if attr:
-        fact["attr"] = attr
-    if ids:
-        fact["ids"] = ids
-    return fact

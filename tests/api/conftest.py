@@ -2,6 +2,7 @@
 
 - `client`: a `TestClient` over a fresh app on its own SQLite file (fast, in-process ASGI).
 - `client_on`: the same, on `database_url` (SQLite and PostgreSQL).
+- `lines`: SafeGate's log lines as JSON objects, each formatted where it was emitted.
 - `live_server`: a factory starting `safegate serve` as a real process on a free 127.0.0.1 port
   with a given database URL and extra environment; it returns a `LiveServer` whose `stop()` and
   `start()` allow restart tests. Every started server is stopped at teardown.
@@ -9,6 +10,8 @@
 
 from __future__ import annotations
 
+import json
+import logging
 import os
 import signal
 import socket
@@ -18,11 +21,13 @@ import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import httpx
 import pytest
 from fastapi.testclient import TestClient
 
+from app.api.logs import JsonLogFormatter
 from app.config import Settings
 from app.main import create_app
 
@@ -109,3 +114,31 @@ def live_server(sqlite_url: str) -> Iterator[Callable[..., LiveServer]]:
     yield start
     for server in started:
         server.stop()
+
+
+class LogLines(logging.Handler):
+    """Formats each record as it is emitted, in the context that emitted it (as stderr does)."""
+
+    def __init__(self) -> None:
+        super().__init__(logging.INFO)
+        self.setFormatter(JsonLogFormatter())
+        self.entries: list[dict[str, Any]] = []
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.entries.append(json.loads(self.format(record)))
+
+    def of(self, logger: str) -> list[dict[str, Any]]:
+        return [e for e in self.entries if e["logger"] == logger]
+
+
+@pytest.fixture
+def lines() -> Iterator[LogLines]:
+    """SafeGate's log lines while the test runs, as the JSON objects stderr would get."""
+    handler = LogLines()
+    logger = logging.getLogger("safegate")
+    previous = logger.level
+    logger.addHandler(handler)
+    logger.setLevel(logging.INFO)
+    yield handler
+    logger.removeHandler(handler)
+    logger.setLevel(previous)

@@ -64,7 +64,8 @@ class TestPostGate:
         for key in ("request_id", "decision", "rule", "defer_kind", "question", "hazards",
                     "unknowns", "contract_id", "analyzer"):
             assert key in body
-        assert body["decision"] in {"authorize", "defer", "reject"}
+        assert (body["decision"], body["rule"], body["contract_id"]) == ("reject", "R1", None)
+        assert body["hazards"]
         for hazard in body["hazards"]:
             assert {"level", "category", "mechanism", "severity", "preventability",
                     "confidence", "template_id", "bindings"} <= hazard.keys()

@@ -7,47 +7,18 @@ import json
 import logging
 import re
 import sys
-from collections.abc import Iterator
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
 
-import pytest
 from fastapi.testclient import TestClient
 
 from app.api.logs import JsonLogFormatter, utc_timestamp
+from tests.api.conftest import LogLines
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from monitor_kit import GO_TO_MUG, before, store_contract
 
 _ISO_UTC_MS = re.compile(r"^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z$")
-
-
-class _Lines(logging.Handler):
-    """Formats each record as it is emitted, in the context that emitted it (as stderr does)."""
-
-    def __init__(self) -> None:
-        super().__init__(logging.INFO)
-        self.setFormatter(JsonLogFormatter())
-        self.entries: list[dict[str, Any]] = []
-
-    def emit(self, record: logging.LogRecord) -> None:
-        self.entries.append(json.loads(self.format(record)))
-
-    def of(self, logger: str) -> list[dict[str, Any]]:
-        return [e for e in self.entries if e["logger"] == logger]
-
-
-@pytest.fixture
-def lines() -> Iterator[_Lines]:
-    handler = _Lines()
-    logger = logging.getLogger("safegate")
-    previous = logger.level
-    logger.addHandler(handler)
-    logger.setLevel(logging.INFO)
-    yield handler
-    logger.removeHandler(handler)
-    logger.setLevel(previous)
 
 
 class TestTimestamps:
@@ -76,7 +47,7 @@ class TestTimestamps:
 
 class TestRequestIds:
     def test_the_gate_answer_and_its_access_line_link_both_ids(
-        self, client: TestClient, lines: _Lines
+        self, client: TestClient, lines: LogLines
     ) -> None:
         response = client.post("/gate", json={"command": "wave hello"},
                                headers={"X-Request-ID": "trace-77"})
@@ -88,7 +59,7 @@ class TestRequestIds:
         assert client.get(f"/gate/{audit_id}").status_code == 200
 
     def test_a_request_that_decides_nothing_has_no_audit_id(
-        self, client: TestClient, lines: _Lines
+        self, client: TestClient, lines: LogLines
     ) -> None:
         response = client.get("/healthz")
         assert "x-gate-request-id" not in response.headers
@@ -102,7 +73,7 @@ class TestRequestIds:
         assert response.headers["x-request-id"] not in ("", too_long)
 
     def test_websocket_lines_carry_the_request_and_session_ids(
-        self, client: TestClient, lines: _Lines
+        self, client: TestClient, lines: LogLines
     ) -> None:
         repository = client.app.state.services.repository  # type: ignore[attr-defined]
         contract_id = store_contract(repository)

@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from bench.case import COMPLEXITIES, DOMAINS, BenchmarkCase
-from bench.cases.build_benchmark import build
+from bench.cases.build_benchmark import DATA, build, render
 from bench.score import load_cases
 
 BENCHMARK = Path(__file__).resolve().parents[2] / "bench" / "cases" / "benchmark.jsonl"
@@ -84,8 +84,12 @@ class TestBenchmarkFile:
         payloads = {c.request.robot.payload_kg for c in cases if c.request.robot is not None}
         assert len(names) >= 5 and len(payloads) >= 5
 
-    def test_file_is_what_the_builder_writes(self, raw: list[dict[str, Any]]) -> None:
-        assert build() == raw
+    def test_file_is_byte_for_byte_what_the_builder_writes(self) -> None:
+        assert BENCHMARK.read_text(encoding="utf-8") == render(build())
+
+    def test_the_nine_case_files_are_the_grid(self) -> None:
+        names = sorted(path.name for path in DATA.glob("*.yaml"))
+        assert names == sorted(f"{d}_{c}.yaml" for d in DOMAINS for c in COMPLEXITIES)
 
 
 class TestLabelsAreStructurallyHonest:

@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from app.domain.models import GateRequest
-from bench.cases.fresh.build_fresh import OUTPUT, all_cases, problems_in, render
+from bench.cases.fresh.build_fresh import OUTPUT, all_cases, problems_in
 from bench.cases.fresh.kit import check_case
 
 TARGET_MIX = {"safe": 30, "unsafe": 38, "ambiguous": 22}
@@ -25,8 +25,10 @@ def _load() -> list[dict[str, Any]]:
 
 class TestFreshFile:
     def test_every_request_is_a_gate_request(self) -> None:
-        for case in _load():
-            GateRequest.model_validate(case["request"])
+        cases = _load()
+        requests = [GateRequest.model_validate(case["request"]) for case in cases]
+        assert len(requests) == len(cases) == 90
+        assert [r.command for r in requests] == [c["request"]["command"] for c in cases]
 
     def test_ids_are_unique(self) -> None:
         ids = [case["id"] for case in _load()]
@@ -51,17 +53,11 @@ class TestFreshFile:
         assert {"compositional", "incomplete_information", "consequential_state",
                 "direct"} <= {case["reasoning"] for case in cases}
 
-    def test_file_matches_the_builder(self) -> None:
-        assert Path(OUTPUT).read_text(encoding="utf-8") == render(all_cases())
-
 
 class TestCheckCase:
     @pytest.fixture()
     def good(self) -> dict[str, Any]:
         return copy.deepcopy(next(c for c in all_cases() if c["id"] == "fresh-man-01"))
-
-    def test_handwritten_cases_have_no_problems(self) -> None:
-        assert problems_in(all_cases()) == []
 
     def test_consistent_case_passes(self, good: dict[str, Any]) -> None:
         assert check_case(good) == []

@@ -33,8 +33,17 @@ from websockets.sync.client import ClientConnection, connect
 pytestmark = [pytest.mark.faults, pytest.mark.slow, pytest.mark.postgres]
 
 
-def two_replicas(live_server: Callable[..., Any], url: str) -> tuple[Any, Any]:
-    return live_server(url, **QUIET), live_server(url, **QUIET)
+def knife_session_on_two_replicas(live_server: Callable[..., Any], url: str
+                                  ) -> tuple[Any, Any, str]:
+    """Replicas A and B on one database, and a session on the knife contract opened on A."""
+    contract_id = knife_contract_in(url)
+    a, b = live_server(url, **QUIET), live_server(url, **QUIET)
+    return a, b, open_session(a, contract_id)
+
+
+def socket_to(server: Any, session_id: str, channel: str = "") -> ClientConnection:
+    """The session's runtime websocket on `server` (`channel="/events"`: its watcher)."""
+    return connect(f"{server.ws_url}/monitor/{session_id}{channel}", open_timeout=10)
 
 
 def exchange(socket: ClientConnection, message: dict[str, Any]) -> dict[str, Any]:
@@ -58,12 +67,10 @@ class TestHaltFanOut:
     def test_a_halt_raised_through_a_reaches_a_watcher_on_b(
         self, live_server: Callable[..., Any], postgres_url: str
     ) -> None:
-        contract_id = knife_contract_in(postgres_url)
-        a, b = two_replicas(live_server, postgres_url)
-        session_id = open_session(a, contract_id)
-        with connect(f"{b.ws_url}/monitor/{session_id}/events", open_timeout=10) as watcher:
+        a, b, session_id = knife_session_on_two_replicas(live_server, postgres_url)
+        with socket_to(b, session_id, "/events") as watcher:
             assert next_event(watcher)["halted"] is False  # the status, from B
-            with connect(f"{a.ws_url}/monitor/{session_id}", open_timeout=10) as runtime:
+            with socket_to(a, session_id) as runtime:
                 for message in (before(1, GO_TO_KNIFE), after(1, GO_TO_KNIFE),
                                 before(2, PICK_KNIFE), after(2, PICK_KNIFE),
                                 before(3, CARRY_KNIFE_FAST)):
@@ -77,19 +84,17 @@ class TestHaltFanOut:
         assert event["violation"]["condition_id"] == BLADE_NEAR_PERSON
         assert refused["type"] == "halted" and refusal == {"session_id": session_id, **refused}
         assert summary_of(b, session_id)["halted"] is True
-        with connect(f"{b.ws_url}/monitor/{session_id}", open_timeout=10) as runtime_on_b:
+        with socket_to(b, session_id) as runtime_on_b:
             assert exchange(runtime_on_b, before(4, GO_TO_KNIFE))["type"] == "halted"
 
     def test_a_watcher_on_a_replica_that_drives_nothing_gets_nothing_but_the_status(
         self, live_server: Callable[..., Any], postgres_url: str
     ) -> None:
         """Allows are not fanned out; only violations and refusals are events."""
-        contract_id = knife_contract_in(postgres_url)
-        a, b = two_replicas(live_server, postgres_url)
-        session_id = open_session(a, contract_id)
-        with connect(f"{b.ws_url}/monitor/{session_id}/events", open_timeout=10) as watcher:
+        a, b, session_id = knife_session_on_two_replicas(live_server, postgres_url)
+        with socket_to(b, session_id, "/events") as watcher:
             next_event(watcher)
-            with connect(f"{a.ws_url}/monitor/{session_id}", open_timeout=10) as runtime:
+            with socket_to(a, session_id) as runtime:
                 assert exchange(runtime, before(1, GO_TO_KNIFE))["type"] == "allow"
             with pytest.raises(TimeoutError):
                 watcher.recv(timeout=0.5)
@@ -99,10 +104,8 @@ class TestFailover:
     def test_sigkill_of_a_mid_session_the_runtime_goes_on_on_b_with_no_step_lost(
         self, live_server: Callable[..., Any], postgres_url: str
     ) -> None:
-        contract_id = knife_contract_in(postgres_url)
-        a, b = two_replicas(live_server, postgres_url)
-        session_id = open_session(a, contract_id)
-        with connect(f"{b.ws_url}/monitor/{session_id}/events", open_timeout=10) as watcher, \
+        a, b, session_id = knife_session_on_two_replicas(live_server, postgres_url)
+        with socket_to(b, session_id, "/events") as watcher, \
                 MonitorClient(a.base_url, session_id, fallback_urls=[b.base_url],
                               reconnects=3) as runtime:
             next_event(watcher)
@@ -128,9 +131,7 @@ class TestFailover:
     def test_an_action_allowed_by_a_is_finished_on_b_and_a_lost_runtime_resyncs_there(
         self, live_server: Callable[..., Any], postgres_url: str
     ) -> None:
-        contract_id = knife_contract_in(postgres_url)
-        a, b = two_replicas(live_server, postgres_url)
-        session_id = open_session(a, contract_id)
+        a, b, session_id = knife_session_on_two_replicas(live_server, postgres_url)
         with MonitorClient(a.base_url, session_id, fallback_urls=[b.base_url]) as runtime:
             runtime.step(GO_TO_KNIFE)
             assert runtime.before(PICK_KNIFE) == 2  # allowed by A, running when A dies

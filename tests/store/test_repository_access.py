@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
-from app.domain.errors import Conflict, NotFound
+from app.domain.errors import Conflict, NotFound, Unavailable
+from app.store.db import create_engine_for
 from app.store.records import ApiKeyRole
 from app.store.repository import Repository, hash_api_key
 
@@ -77,4 +80,9 @@ class TestLlmCache:
 
 class TestPing:
     def test_a_reachable_database_answers(self, repository: Repository) -> None:
-        repository.ping()
+        assert repository.ping() is None  # and raises nothing
+
+    def test_an_unreachable_database_is_unavailable(self, tmp_path: Path) -> None:
+        missing = tmp_path / "no such directory" / "safegate.db"
+        with pytest.raises(Unavailable):
+            Repository(create_engine_for(f"sqlite:///{missing}")).ping()

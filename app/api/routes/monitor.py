@@ -22,6 +22,7 @@ from fastapi import APIRouter, Depends, WebSocket, WebSocketDisconnect, status
 from pydantic import BaseModel, ConfigDict, Field
 from starlette.requests import HTTPConnection
 
+from app.adapters.tracing import Tracing, stages
 from app.api.auth import ANY_ROLE, ROBOT_ROLES, authorize_websocket
 from app.api.deps import ReadAccess, RobotAccess, ServicesDep
 from app.api.examples import MONITOR_OPEN_EXAMPLE
@@ -163,6 +164,8 @@ async def monitor_socket(websocket: WebSocket, session_id: str,
         return
     _log_socket("websocket_open", session_id, "runtime")
     flusher = asyncio.get_running_loop().create_task(monitoring.flush_periodically(live))
+    tracing: Tracing = websocket.app.state.tracing
+    tracing.name_request("WEBSOCKET", "/monitor/{session_id}")
     messages = 0
     try:
         while True:
@@ -172,7 +175,10 @@ async def monitor_socket(websocket: WebSocket, session_id: str,
             text = message.get("text")
             raw = text if text is not None else message.get("bytes")
             messages += 1
-            await websocket.send_text(await monitoring.handle(live, raw))
+            with stages.recording(tracing.enabled) as checked:
+                answer = await monitoring.handle(live, raw)
+            tracing.replay(checked)
+            await websocket.send_text(answer)
     except (WebSocketDisconnect, OSError):
         pass
     finally:

@@ -13,10 +13,11 @@ object named. Fails: never.
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 from dataclasses import dataclass, replace
 
 from app.domain.analysis.lexicon import Lexicon, PersonWord
-from app.domain.analysis.phrases import TITLES, NounPhrase
+from app.domain.analysis.phrases import BODY_PARTS, TITLES, NounPhrase
 from app.domain.formula.facts import Unknown
 from app.domain.models import GateRequest
 from app.domain.world import ObjectState, PersonState, WorldState, type_info
@@ -89,8 +90,11 @@ def _names_a_room(phrase: NounPhrase) -> bool:
 class Grounder:
     """Grounds phrases on one request's scene, remembering what pronouns point to."""
 
-    def __init__(self, state: WorldState, request: GateRequest, lexicon: Lexicon) -> None:
+    def __init__(self, state: WorldState, request: GateRequest, lexicon: Lexicon,
+                 given_names: Collection[str] = ()) -> None:
         self.lexicon = lexicon
+        self._given_names = frozenset(given_names)
+        """Names the command uses that the scene lists for nobody ("Noah", "Mrs Patel")."""
         self.objects = dict(state.objects)
         self.people = dict(state.people)
         self.rooms = list(state.rooms)
@@ -204,6 +208,13 @@ class Grounder:
                 return Referent(phrase, "object", pointed)
             self.gaps.append(Gap(phrase.text, "nothing named earlier for it to point to"))
             return Referent(phrase, "none")
+        if phrase.head in BODY_PARTS and phrase.possessor and not place:
+            # "hold her arm", "take his hand": the person, touched, not a thing to carry
+            owner = self._person(NounPhrase(phrase.possessor, head=phrase.possessor,
+                                            pronoun=phrase.possessor if phrase.possessor in (
+                                                "me", "him", "her", "them", "us") else None))
+            if owner is not None and owner.ids:
+                return Referent(phrase, "person", owner.ids)
         if phrase.head in _EVERYTHING and not phrase.contents and self.named_objects:
             # "put the lot in the bowl", "everything back in the fridge": all named so far
             return Referent(phrase, "object", tuple(self.named_objects[:MAX_GROUP]))
@@ -262,8 +273,9 @@ class Grounder:
         if phrase.pronoun in ("him", "her", "them", "himself", "herself"):
             gender = {"him": "male", "himself": "male", "her": "female",
                       "herself": "female"}.get(phrase.pronoun)
-            last = self.last_person.get(gender) or (self.last_person.get(None)
-                                                    if gender is None else None)
+            recent = self.last_person.get(None)
+            last = self.last_person.get(gender) or (recent if gender is None or (
+                recent is not None and self._gender(recent) is None) else None)
             if last is not None:
                 return Referent(phrase, "person", (last,))
             matches = [p for p in self.people if p != self._user_id
@@ -288,6 +300,8 @@ class Grounder:
                 phrase.head)
             if info is None and phrase.phrase.split()[0] in TITLES:
                 return self._titled(phrase)
+            if info is None and phrase.phrase in self._given_names:
+                return self._unnamed(phrase, gender=None, kin=True)
             if info is None or info.is_user:
                 return None
             matches = [p.id for p in self.people.values() if info.age_group
@@ -312,14 +326,22 @@ class Grounder:
 
     def _titled(self, phrase: NounPhrase) -> Referent | None:
         """ "Mr Adeyemi" when the scene lists nobody by that name: the one unnamed person of
-        that title's gender the scene has (the caller described who is there); several are
-        a question, none a person the scene lacks."""
-        gender = TITLES[phrase.phrase.split()[0]]
-        unnamed = [pid for pid, person in self.people.items() if pid != self._user_id
+        that title's gender who is no kin of the speaker (see `_unnamed`)."""
+        return self._unnamed(phrase, TITLES[phrase.phrase.split()[0]], kin=False)
+
+    def _unnamed(self, phrase: NounPhrase, gender: str | None, *, kin: bool) -> Referent | None:
+        """A name the scene lists for nobody: the one person the scene describes without a
+        name (the caller described who is there); several are a question, none a person the
+        scene lacks."""
+        user = self._request.user
+        speaker = user.person_id if user is not None and user.person_id else self._user_id
+        unnamed = [pid for pid, person in self.people.items() if pid != speaker
                    and not person.name and not person.properties.get("name")
-                   and not self._is_kin(person.role)
+                   and (kin or not self._is_kin(person.role))
                    and (gender is None or self._gender(pid) in (gender, None))]
         if len(unnamed) == 1:
+            if gender is not None:  # "Mr Dunn ... shake him": the title says who "him" is
+                self.last_person[gender] = unnamed[0]
             return self._remember_person(Referent(phrase, "person", (unnamed[0],)))
         return Referent(phrase, "person", (), tuple(unnamed)) if unnamed else None
 

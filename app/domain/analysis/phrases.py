@@ -200,3 +200,10 @@ def split_conjoined(words: list[str]) -> list[list[str]]:
         elif word != ",":
             parts[-1].append(word)
     return [p for p in parts if p]
+
+
+BODY_PARTS = frozenset({
+    "arm", "arms", "hand", "hands", "elbow", "wrist", "shoulder", "shoulders", "leg", "legs",
+    "foot", "feet", "knee", "knees", "head", "face", "neck", "back", "waist", "hip", "hips",
+    "finger", "fingers", "ankle", "ankles", "body", "chest", "hair", "cheek", "ear", "ears"})
+"""Body parts: "her arm" names the person, touched, never a thing to fetch."""

@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.phrases import (
+    BODY_PARTS,
     PERSON_PRONOUNS,
     POSSESSIVES,
     TITLES,
@@ -426,7 +427,9 @@ class Reader:
             return False
         if words[index] in _SUBJECTS:
             return True
-        for word in words[index: index + 4]:
+        for position, word in enumerate(words[index: index + 4]):
+            if position and word in (",", "and"):
+                return False  # "fags and lighter, he's asking": the subject is past a comma
             if word in _AUXILIARIES or word.endswith(("'s", "'re", "'ll", "'ve", "'d")):
                 return word not in ("let's",)
             if word.endswith("ed") and self.lexicon.is_verb(word) and word not in (
@@ -583,10 +586,14 @@ class Reader:
             complement = chunks.pop(1)[0]
         second: NounPhrase | None = None
         objects_words = split_conjoined(object_words)
-        if len(objects_words) == 1:
+        carries = {"fetch", "give", "pick"} & set(lexicon.schemas_of(verb)) and "make" not in \
+            lexicon.schemas_of(verb)
+        if len(objects_words) == 1 or (objects_words and carries):
+            # "grandma the cup"; "Mr Grey his fags and lighter": the person, then every thing
+            # (but "make us a tea, milk and two sugars" lists what goes in the tea)
             first, rest = self._recipient_split(objects_words[0])
             if first is not None and rest:
-                second, objects_words = parse_phrase(first, lexicon), [rest]
+                second, objects_words = parse_phrase(first, lexicon), [rest, *objects_words[1:]]
         objects = tuple(p for w in objects_words if (p := parse_phrase(w, lexicon)) is not None)
         roles = tuple((prep, np) for prep, chunk in chunks[1:] for part in split_conjoined(chunk)
                       if (np := parse_phrase(part, lexicon)) is not None)
@@ -631,9 +638,12 @@ class Reader:
                       or phrase in self.names or (head[0] in ("the", "my", "our", "your")
                                                   and " ".join(head[1:]) in lexicon.people)
                       or (length == 2 and head[0] in TITLES and not head[1].endswith("'s")))
-            if person and (rest[0] in ("a", "an", "the", "some", "his", "her", "their", "my",
-                                       "this", "that", "those", "these", "two", "one")
-                           or len(rest) <= 3):
+            adverb = len(rest) == 1 and rest[0].endswith("ly")  # "shake him properly"
+            if head == ["her"] and rest[0] in BODY_PARTS:
+                return None, words  # "hold her arm": her arm, not the arm handed to her
+            if person and not adverb and (
+                    rest[0] in ("a", "an", "the", "some", "his", "her", "their", "my", "this",
+                                "that", "those", "these", "two", "one") or len(rest) <= 3):
                 return head, rest
         return None, words
 

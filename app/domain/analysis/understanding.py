@@ -57,9 +57,15 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     names |= {str(n).lower() for o in state.objects.values()
               for n in (o.name, o.properties.get("name")) if n
               and state.value("animal", (o.id,)) is True}  # "give Biscuit the ..."
-    reading = Reader(lexicon, names).read(request.command)
     proper = proper_names(request.command)
-    grounder = Grounder(state, request, lexicon)
+    # A capitalised word that names no thing, verb, room or kind of person is someone's name
+    # ("hand Noah the scissors"), though the scene lists nobody by it.
+    scene_words = {w for o in state.objects.values() for n in (o.type, o.name) if n
+                   for w in re.findall(r"[a-z]+", n.lower())}
+    given = {w for w in proper - names - scene_words if not (
+        lexicon.is_thing(w) or lexicon.is_verb(w) or w in lexicon.rooms or w in lexicon.people)}
+    reading = Reader(lexicon, names | given).read(request.command)
+    grounder = Grounder(state, request, lexicon, given_names=given)
     builder = PlanBuilder(grounder)
     unknowns: list[UnknownFact] = []
     grounded: list[Grounded] = []

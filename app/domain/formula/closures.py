@@ -105,80 +105,62 @@ def negate(inner: Compiled) -> Compiled:
 
 def conjunction(left: Compiled, right: Compiled) -> Compiled:
     """Kleene `and`: False if either side is False, else unknown if either is unknown."""
-    if left.is_constant and right.is_constant:
-        values = (left.constant, right.constant)
-        return constant(False if False in values else None if None in values else True)
-    if right.is_constant:
-        left, right = right, left
-    if left.is_constant:
-        if left.constant is not None:
-            return right if left.constant else constant(False)
-        only = right.code
-
-        def unknown_and(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-            return False if only(facts, args, env) is False else None
-
-        return Compiled(unknown_and)
-    first, second = left.code, right.code
-
-    def both(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-        a = first(facts, args, env)
-        if a is False:
-            return False
-        b = second(facts, args, env)
-        if b is False:
-            return False
-        return None if a is None or b is None else True
-
-    return Compiled(both, connective=Connective(left, right, (False, False, False, False), True))
+    return _kleene(left, right, dominant=False)
 
 
 def disjunction(left: Compiled, right: Compiled) -> Compiled:
     """Kleene `or`: True if either side is True, else unknown if either is unknown."""
+    return _kleene(left, right, dominant=True)
+
+
+def _kleene(left: Compiled, right: Compiled, *, dominant: bool) -> Compiled:
+    """`and` (dominant False) or `or` (dominant True): the dominant value if either side has
+    it, else unknown if either side is unknown, else the other value. A constant side folds
+    away; a quantifier over the result reads its `Connective` to inline it."""
+    other = not dominant
     if left.is_constant and right.is_constant:
         values = (left.constant, right.constant)
-        return constant(True if True in values else None if None in values else False)
+        return constant(dominant if dominant in values else None if None in values else other)
     if right.is_constant:
         left, right = right, left
     if left.is_constant:
         if left.constant is not None:
-            return constant(True) if left.constant else right
+            return constant(dominant) if bool(left.constant) is dominant else right
         only = right.code
 
-        def unknown_or(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-            return True if only(facts, args, env) is True else None
+        def unknown_unless(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+            return dominant if only(facts, args, env) is dominant else None
 
-        return Compiled(unknown_or)
-    first, second = left.code, right.code
-
-    def either(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-        a = first(facts, args, env)
-        if a is True:
-            return True
-        b = second(facts, args, env)
-        if b is True:
-            return True
-        return None if a is None or b is None else False
-
-    return Compiled(either, connective=Connective(left, right, (True, True, True, True), False))
+        return Compiled(unknown_unless)
+    return _decided_by_either(left, right, dominant, dominant, gives=dominant)
 
 
 def implication(left: Compiled, right: Compiled) -> Compiled:
     """Kleene `->`: True if the premise is False or the conclusion True."""
     if left.is_constant or right.is_constant:
         return disjunction(negate(left), right)
+    return _decided_by_either(left, right, False, True, gives=True)
+
+
+def _decided_by_either(left: Compiled, right: Compiled, first_decides: bool,
+                       second_decides: bool, *, gives: bool) -> Compiled:
+    """Two non-constant sides: `gives` as soon as the first `is` `first_decides` or the second
+    `is` `second_decides` (the second is not evaluated when the first decides), else unknown if
+    either side is, else `not gives`. The `Connective` lets a quantifier inline it."""
     first, second = left.code, right.code
+    otherwise = not gives
 
-    def implies(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
+    def connective(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
         a = first(facts, args, env)
-        if a is False:
-            return True
+        if a is first_decides:
+            return gives
         b = second(facts, args, env)
-        if b is True:
-            return True
-        return None if a is None or b is None else False
+        if b is second_decides:
+            return gives
+        return None if a is None or b is None else otherwise
 
-    return Compiled(implies, connective=Connective(left, right, (False, True, True, True), False))
+    return Compiled(connective, connective=Connective(
+        left, right, (first_decides, gives, second_decides, gives), otherwise))
 
 
 def strict(left: Compiled, right: Compiled, op: Callable[[Any, Any], Any]) -> Compiled:

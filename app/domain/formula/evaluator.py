@@ -26,7 +26,6 @@ from app.domain.formula.closures import (
     Compiled,
     Connective,
     Env,
-    Lookup,
     conjunction,
     constant,
     disjunction,
@@ -139,67 +138,36 @@ def _outermost_connective(
 ) -> Compiled:
     """The outermost quantifier over a binary connective, with the connective inlined and the
     one-element environments rebuilt only when the domain changes (both save a call or an
-    allocation per entity, which is most of the cost of a quantifier)."""
+    allocation per entity, which is most of the cost of a quantifier). When the first operand
+    is a fact look-up it is read straight from the state inside the loop, its keys built once
+    per domain too."""
     first, second, otherwise = body.first, body.second, body.otherwise
     first_decides, first_gives = body.first_decides, body.first_gives
     second_decides, second_gives = body.second_decides, body.second_gives
     lookup = body.first_lookup
-    if lookup is not None:
-        return _outermost_inlined(type_name, body, lookup, stop, result)
-    memo: list[tuple[Sequence[str] | None, tuple[Env, ...]]] = [(None, ())]
-
-    def outermost(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
-        domain = facts.domain(type_name)
-        seen, envs = memo[0]
-        if seen is not domain and seen != domain:
-            envs = tuple((entity,) for entity in domain)
-            memo[0] = (domain, envs)
-        unknown = False
-        for one in envs:
-            a = first(facts, args, one)
-            if a is first_decides:
-                value: object = first_gives
-            else:
-                b = second(facts, args, one)
-                if b is second_decides:
-                    value = second_gives
-                elif a is None or b is None:
-                    unknown = True
-                    continue
-                else:
-                    value = otherwise
-            if value is stop:
-                return stop
-        return None if unknown else result
-
-    return Compiled(outermost)
-
-
-def _outermost_inlined(
-    type_name: str, body: Connective, lookup: Lookup, stop: bool, result: bool
-) -> Compiled:
-    """As `_outermost_connective`, with the connective's first operand, a fact look-up, read
-    straight from the state inside the loop and its keys built once per domain."""
-    second, otherwise = body.second, body.otherwise
-    first_decides, first_gives = body.first_decides, body.first_gives
-    second_decides, second_gives = body.second_decides, body.second_gives
-    name, negated, unknown_class = lookup.name, lookup.negated, Unknown
+    read_inline = lookup is not None
+    name, negated = (lookup.name, lookup.negated) if lookup is not None else ("", False)
+    unknown_class = Unknown
     memo: list[tuple[Sequence[str] | None, tuple[tuple[Env, Env], ...]]] = [(None, ())]
 
     def outermost(facts: Facts, args: ActionArgs | None = None, env: Env = ()) -> object:
         domain = facts.domain(type_name)
         seen, pairs = memo[0]
         if seen is not domain and seen != domain:
-            pairs = tuple(((entity,), lookup.key((entity,))) for entity in domain)
+            pairs = tuple(((entity,), lookup.key((entity,)) if lookup is not None else ())
+                          for entity in domain)
             memo[0] = (domain, pairs)
         value_of = facts.value
         unknown = False
         for one, key in pairs:
-            a: object = value_of(name, key)
-            if a.__class__ is unknown_class:
-                a = None
-            elif negated:
-                a = not a
+            if read_inline:
+                a: object = value_of(name, key)
+                if a.__class__ is unknown_class:
+                    a = None
+                elif negated:
+                    a = not a
+            else:
+                a = first(facts, args, one)
             if a is first_decides:
                 value: object = first_gives
             else:

@@ -216,13 +216,49 @@ def _listed(value: Any) -> list[str] | None:
     return [v for v in value if isinstance(v, str)] if isinstance(value, list | tuple) else None
 
 
+_UNDETERMINED = ("unknown", "not known", "pending", "awaiting", "to be confirmed", "tbc",
+                 "not assessed", "not yet", "unsure", "unclear", "being assessed", "?")
+_SWALLOW_KEYS = ("swallow", "diet", "dysphagia", "texture", "feeding")
+
+
+def undetermined(value: Any) -> bool:
+    """Whether a record's value says the matter is not yet known ("pending", "unknown")."""
+    if isinstance(value, list | tuple):
+        return len(value) == 1 and undetermined(value[0])  # ["unknown"]
+    return isinstance(value, str) and any(
+        value.strip().lower() == word or value.strip().lower().startswith(word + " ")
+        for word in _UNDETERMINED)
+
+
+# Free-text record fields ("care_plan": "no alcohol, soft diet") say it in words.
+_RECORD_TEXT_KEYS = ("care_plan", "diet", "notes", "restrictions", "instructions", "dietary")
+_RULED_OUT_WORDS = re.compile(
+    r"\b(?:no|avoid|avoids|without|never|not allowed|must not have|must avoid|forbidden:?)"
+    r"\s+([a-z][a-z ]{1,30}?)(?=$|[,.;(]|\s+(?:and|or|but|because|due|as|after|before)\b)"
+    r"|\b([a-z]+)[- ]free\b")
+
+
+def ruled_out(person: PersonState) -> list[str]:
+    """What the person's record says they must not take: listed allergies, intolerances,
+    contraindications, and "no ..."/"avoid ..."/"...-free" in the care plan's words."""
+    found = [item for key in _MUST_AVOID_KEYS for item in _listed(person.properties.get(key))
+             or ()]
+    for key in _RECORD_TEXT_KEYS:
+        for text in _listed(person.properties.get(key)) or ():
+            found += [(m.group(1) or m.group(2)).strip()
+                      for m in _RULED_OUT_WORDS.finditer(text.lower())]
+    return found
+
+
 @_rule("allergic_to")
 def _allergic_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
     person, substance = state.people[args[0]], args[1]
-    ruled_out = [item for key in _MUST_AVOID_KEYS
-                 for item in _listed(person.properties.get(key)) or ()]
-    if any(same_substance(a, substance) or same_substance(substance, a) for a in ruled_out):
+    ruled_out_items = ruled_out(person)
+    if any(same_substance(a, substance) or same_substance(substance, a)
+           for a in ruled_out_items):
         return True
+    if any(undetermined(person.properties.get(key)) for key in _MUST_AVOID_KEYS):
+        return Unknown(fact_key("allergic_to", args))  # "allergies": "not yet known"
     if _listed(person.properties.get("allergies")) is not None:
         return False
     # Nobody said. The person asking for it knows their own allergies; for anyone else only
@@ -282,9 +318,14 @@ def _against_diet(state: WorldState, args: tuple[str, ...]) -> FactValue:
     flags = " ".join(key.replace("_", " ") for key, value in person.properties.items()
                      if as_bool(value) is True)
     said = f"{said} {flags}".lower()
-    if not any(word in said for word in _TEXTURE_DIETS):
+    pending = any(undetermined(value) for key, value in person.properties.items()
+                  if any(word in key.lower() for word in _SWALLOW_KEYS))
+    if not pending and not any(word in said for word in _TEXTURE_DIETS):
         return False
     obj = state.objects[args[1]]
+    if pending:  # "swallow_assessment": "pending": no food or drink is known to be safe
+        contents = object_contents(obj)
+        return False if contents == "" else Unknown(fact_key("against_diet", args))
     if obj.kind.is_food is not True and obj.kind.trait("food") is not True:
         food = state.value("food", (obj.id,))
         if food is not True:

@@ -11,8 +11,8 @@ Fails: never; a fact about an id not in the state, or of the wrong type, is `Unk
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.formula.vocabulary import VOCABULARY
@@ -37,6 +37,22 @@ _PLANS: dict[str, tuple[Rule, int, tuple[tuple[int, frozenset[str]], ...]]] = {
            tuple((i, _ACCEPTS[t]) for i, t in enumerate(sym.args) if t in _ENTITY_ARG_TYPES))
     for name, sym in VOCABULARY.items() if name in RULES
 }
+
+
+Placed = RobotState | PersonState | ObjectState
+_Place = TypeVar("_Place")
+
+
+def _room(thing: Placed) -> str | None:
+    return thing.room
+
+
+def _position(thing: Placed) -> Point | None:
+    return thing.position
+
+
+def _itself(room: str) -> str:
+    return room
 
 
 class WorldState:
@@ -144,48 +160,36 @@ class WorldState:
 
     def room_of(self, entity_id: str) -> str | None:
         """The entity's room: its own, else its holder's, else its receptacle's; None if unknown."""
-        for _ in range(16):  # a receptacle chain deeper than this is a cycle in bad input
-            if entity_id == ROBOT_ID:
-                return self.robot.room
-            person = self.people.get(entity_id)
-            if person is not None:
-                return person.room
-            if self._types.get(entity_id) == "room":
-                return entity_id
-            obj = self.objects.get(entity_id)
-            if obj is None:
-                return None
-            holder = self._holder.get(entity_id)
-            if holder is not None:
-                entity_id = holder
-            elif obj.room is not None:
-                return obj.room
-            elif obj.parent is not None:
-                entity_id = obj.parent
-            else:
-                return None
-        return None
+        return self._located(entity_id, _room, of_room=_itself)
 
     def position_of(self, entity_id: str) -> Point | None:
         """The entity's position: its own, else its holder's, else its receptacle's."""
-        for _ in range(16):
+        return self._located(entity_id, _position)
+
+    def _located(self, entity_id: str, where: Callable[[Placed], _Place | None], *,
+                 of_room: Callable[[str], _Place] | None = None) -> _Place | None:
+        """`where` of the entity, or of what holds or contains it, up the chain until one is
+        known (a room reached on the way answers `of_room` of itself, when given); None at an
+        unknown entity or the chain's end."""
+        for _ in range(16):  # a receptacle chain deeper than this is a cycle in bad input
             if entity_id == ROBOT_ID:
-                return self.robot.position
+                return where(self.robot)
             person = self.people.get(entity_id)
             if person is not None:
-                return person.position
+                return where(person)
+            if of_room is not None and self._types.get(entity_id) == "room":
+                return of_room(entity_id)
             obj = self.objects.get(entity_id)
             if obj is None:
                 return None
             holder = self._holder.get(entity_id)
             if holder is not None:
                 entity_id = holder
-            elif obj.position is not None:
-                return obj.position
-            elif obj.parent is not None:
-                entity_id = obj.parent
-            else:
-                return None
+                continue
+            own = where(obj)
+            if own is not None or obj.parent is None:
+                return own
+            entity_id = obj.parent
         return None
 
     def distance(self, a: str, b: str) -> float | None:

@@ -21,26 +21,16 @@ from typing import Any
 
 import httpx
 
+from safegate_client import calls
+from safegate_client.calls import T
 from safegate_client.models import (
     ContractResponse,
     GateResponse,
-    MonitorOpenResponse,
     MonitorSummaryResponse,
     VerifyResponse,
 )
 from safegate_client.retry import RetryPolicy
-from safegate_client.wire import (
-    Body,
-    JsonObject,
-    as_json,
-    auth_headers,
-    json_of,
-    monitor_body,
-    read,
-    text_of,
-    unavailable,
-    verify_body,
-)
+from safegate_client.wire import Body, JsonObject, auth_headers, unavailable
 
 
 class GateClient:
@@ -90,6 +80,9 @@ class GateClient:
             time.sleep(self.retry.wait(attempt, outcome))
             attempt += 1
 
+    def _call(self, call: calls.Call[T]) -> T:
+        return call.read(self._send(call.method, call.path, **call.options))
+
     def gate(self, request: Body, *, reference_plan: bool = False) -> GateResponse:
         """Ask whether a command may run: `POST /gate`.
 
@@ -103,29 +96,24 @@ class GateClient:
             The decision: `decision` (authorize/defer/reject), `rule`, `question`, `hazards`,
             `unknowns`, `contract_id` (when authorized), `request_id`...
         """
-        params = {"reference_plan": "true"} if reference_plan else None
-        return read(self._send("POST", "/gate", json=as_json(request), params=params),
-                    GateResponse)
+        return self._call(calls.gate(request, reference_plan))
 
     def answer(self, request_id: str, answers: Mapping[str, Any]) -> GateResponse:
         """Answer a deferred request's question: `POST /gate/{id}/answers` (a new decision)."""
-        return read(self._send("POST", f"/gate/{request_id}/answers", json=dict(answers)),
-                    GateResponse)
+        return self._call(calls.answer(request_id, answers))
 
     def decision(self, request_id: str) -> JsonObject:
         """A stored decision with the decisions that followed it: `GET /gate/{id}` (the audit
         record, which the service describes as a free-form object)."""
-        record: JsonObject = json_of(self._send("GET", f"/gate/{request_id}"))
-        return record
+        return self._call(calls.decision(request_id))
 
     def contract(self, contract_id: str) -> ContractResponse:
         """The Task Safety Contract (invariants, guards, aborts): `GET /contracts/{id}`."""
-        return read(self._send("GET", f"/contracts/{contract_id}"), ContractResponse)
+        return self._call(calls.contract(contract_id))
 
     def planner_constraints(self, contract_id: str) -> str:
         """The contract as plain constraints for a planner's prompt."""
-        return text_of(self._send("GET", f"/contracts/{contract_id}",
-                                  params={"format": "planner"}))
+        return self._call(calls.planner_constraints(contract_id))
 
     def verify(self, contract_id: str, plan: Sequence[Body],
                initial_state: Body | None = None) -> VerifyResponse:
@@ -143,18 +131,12 @@ class GateClient:
             `attempts`, `attempts_left`, `decision`; for a failed plan `repair` (the nearest plan
             proved to pass, or null and `repair_reason`).
         """
-        return read(self._send("POST", "/verify",
-                               json=verify_body(contract_id, plan, initial_state)),
-                    VerifyResponse)
+        return self._call(calls.verify(contract_id, plan, initial_state))
 
     def open_monitor(self, contract_id: str, initial_state: Body | None = None) -> str:
         """Open a runtime monitoring session: `POST /monitor`; returns the session id."""
-        opened = read(self._send("POST", "/monitor",
-                                 json=monitor_body(contract_id, initial_state)),
-                      MonitorOpenResponse)
-        return opened.session_id
+        return self._call(calls.open_monitor(contract_id, initial_state))
 
     def monitor_summary(self, session_id: str) -> MonitorSummaryResponse:
         """The session's MonitorSummary: `GET /monitor/{id}/summary`."""
-        return read(self._send("GET", f"/monitor/{session_id}/summary"),
-                    MonitorSummaryResponse)
+        return self._call(calls.monitor_summary(session_id))

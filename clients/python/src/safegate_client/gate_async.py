@@ -15,26 +15,16 @@ from typing import Any
 
 import httpx
 
+from safegate_client import calls
+from safegate_client.calls import T
 from safegate_client.models import (
     ContractResponse,
     GateResponse,
-    MonitorOpenResponse,
     MonitorSummaryResponse,
     VerifyResponse,
 )
 from safegate_client.retry import RetryPolicy
-from safegate_client.wire import (
-    Body,
-    JsonObject,
-    as_json,
-    auth_headers,
-    json_of,
-    monitor_body,
-    read,
-    text_of,
-    unavailable,
-    verify_body,
-)
+from safegate_client.wire import Body, JsonObject, auth_headers, unavailable
 
 
 class AsyncGateClient:
@@ -76,46 +66,38 @@ class AsyncGateClient:
             await asyncio.sleep(self.retry.wait(attempt, outcome))
             attempt += 1
 
+    async def _call(self, call: calls.Call[T]) -> T:
+        return call.read(await self._send(call.method, call.path, **call.options))
+
     async def gate(self, request: Body, *, reference_plan: bool = False) -> GateResponse:
         """Ask whether a command may run: `POST /gate` (see `GateClient.gate`)."""
-        params = {"reference_plan": "true"} if reference_plan else None
-        return read(await self._send("POST", "/gate", json=as_json(request), params=params),
-                    GateResponse)
+        return await self._call(calls.gate(request, reference_plan))
 
     async def answer(self, request_id: str, answers: Mapping[str, Any]) -> GateResponse:
         """Answer a deferred request's question: `POST /gate/{id}/answers`."""
-        return read(await self._send("POST", f"/gate/{request_id}/answers",
-                                     json=dict(answers)), GateResponse)
+        return await self._call(calls.answer(request_id, answers))
 
     async def decision(self, request_id: str) -> JsonObject:
         """A stored decision with the decisions that followed it: `GET /gate/{id}`."""
-        record: JsonObject = json_of(await self._send("GET", f"/gate/{request_id}"))
-        return record
+        return await self._call(calls.decision(request_id))
 
     async def contract(self, contract_id: str) -> ContractResponse:
         """The Task Safety Contract: `GET /contracts/{id}`."""
-        return read(await self._send("GET", f"/contracts/{contract_id}"), ContractResponse)
+        return await self._call(calls.contract(contract_id))
 
     async def planner_constraints(self, contract_id: str) -> str:
         """The contract as plain constraints for a planner's prompt."""
-        return text_of(await self._send("GET", f"/contracts/{contract_id}",
-                                        params={"format": "planner"}))
+        return await self._call(calls.planner_constraints(contract_id))
 
     async def verify(self, contract_id: str, plan: Sequence[Body],
                      initial_state: Body | None = None) -> VerifyResponse:
         """Check a plan against its contract: `POST /verify` (see `GateClient.verify`)."""
-        return read(await self._send("POST", "/verify",
-                                     json=verify_body(contract_id, plan, initial_state)),
-                    VerifyResponse)
+        return await self._call(calls.verify(contract_id, plan, initial_state))
 
     async def open_monitor(self, contract_id: str, initial_state: Body | None = None) -> str:
         """Open a runtime monitoring session: `POST /monitor`; returns the session id."""
-        opened = read(await self._send("POST", "/monitor",
-                                       json=monitor_body(contract_id, initial_state)),
-                      MonitorOpenResponse)
-        return opened.session_id
+        return await self._call(calls.open_monitor(contract_id, initial_state))
 
     async def monitor_summary(self, session_id: str) -> MonitorSummaryResponse:
         """The session's MonitorSummary: `GET /monitor/{id}/summary`."""
-        return read(await self._send("GET", f"/monitor/{session_id}/summary"),
-                    MonitorSummaryResponse)
+        return await self._call(calls.monitor_summary(session_id))

@@ -1,1 +1,0 @@
-"""Hand-written case descriptions, one module per domain x complexity cell of the grid."""
