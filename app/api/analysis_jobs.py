@@ -15,6 +15,7 @@ from typing import Any
 
 from app.api.schemas import gate_response
 from app.api.verify_schemas import VerifyRequest, verify_response
+from app.domain.gate import Decision, Rule
 from app.domain.models import GateRequest
 from app.metrics import Metrics
 from app.services import Services, extensions, gate, verification
@@ -26,8 +27,8 @@ class GateAnswer:
     """A decision's answer (GateResponse JSON) and what the metrics count of it."""
 
     body: str
-    decision: str
-    rule: str
+    decision: Decision
+    rule: Rule
     timings_ms: dict[str, float]
     record_id: str = ""
     """The audit record's id (answered in `X-Gate-Request-ID` too)."""

@@ -163,13 +163,13 @@ def gate_response(decided: Decided) -> GateResponse:
     suggestions = [
         suggested_template(u.proposal)
         for u in result.binding.unbound
-        if decision.defer_kind is not None and decision.defer_kind.value == "extend_library"
+        if decision.defer_kind is DeferKind.EXTEND_LIBRARY
     ]
     return GateResponse(
         request_id=str(record.id),
-        decision=decision.decision.value,
-        rule=decision.rule.value,
-        defer_kind=decision.defer_kind.value if decision.defer_kind else None,
+        decision=decision.decision,
+        rule=decision.rule,
+        defer_kind=decision.defer_kind,
         question=decision.question,
         reason=decision.reason,
         hazards=hazards_out(result.binding),

@@ -17,6 +17,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from app.domain.errors import Conflict
+from app.domain.gate import Decision, DeferKind
 from app.domain.models import HazardProposal
 from app.domain.template_validation import suggest_template
 from app.services import gate
@@ -62,7 +63,7 @@ def _unbound_hazards(record: GateRecord) -> tuple[HazardProposal, ...]:
 
 def is_waiting(record: GateRecord) -> bool:
     """Whether a decision defers for a library extension."""
-    return record.decision == "defer" and record.defer_kind == "extend_library"
+    return record.decision is Decision.DEFER and record.defer_kind is DeferKind.EXTEND_LIBRARY
 
 
 def waiting_requests(services: Services) -> list[WaitingRequest]:

@@ -68,9 +68,9 @@ def decide(
             id=request_id,
             request=request,
             hazard_report=result.report,
-            decision=decision.decision.value,
-            rule=decision.rule.value,
-            defer_kind=decision.defer_kind.value if decision.defer_kind else None,
+            decision=decision.decision,
+            rule=decision.rule,
+            defer_kind=decision.defer_kind,
             question=decision.question,
             triggers=[h.model_dump(mode="json") for h in decision.trigger_hazards]
             + [u.model_dump(mode="json") for u in decision.trigger_unknowns],

@@ -25,14 +25,12 @@ from typing import Any
 
 from app.domain.contracts import Contract
 from app.domain.errors import AttemptsExhausted, InvalidInput
+from app.domain.gate import Decision
 from app.domain.models import GateRequest, InitialState
 from app.domain.planning import Repair, repair_plan
 from app.domain.verify import Undecided, VerificationResult, Violation, verify_plan
 from app.services.container import Services
 from app.store.records import ContractRecord, ContractStatus, VerificationAttemptRecord
-
-AUTHORIZE = "authorize"
-REJECT = "reject"
 
 
 @dataclass(frozen=True)
@@ -43,7 +41,7 @@ class Verified:
     contract_id: str | None
     attempts: int
     attempts_left: int | None
-    decision: str | None
+    decision: Decision | None
     downgraded: bool
     duration_ms: float
     repair: Repair | None = None
@@ -118,7 +116,8 @@ def verify(
         _downgrade(services, stored, result)
         downgraded = True
     verified = Verified(result, contract_id, stored.attempts_used, stored.attempts_left,
-                        REJECT if downgraded else AUTHORIZE, downgraded, duration_ms)
+                        Decision.REJECT if downgraded else Decision.AUTHORIZE, downgraded,
+                        duration_ms)
     return _with_repair(verified, plan, domain_contract, start, timeout_ms)
 
 
