@@ -32,7 +32,7 @@ from app.store.repository import Repository
 
 
 def repository_of(client: TestClient) -> Repository:
-    repository: Repository = client.app.state.services.repository  # type: ignore[attr-defined]
+    repository = Repository(client.app.state.components.engine)  # type: ignore[attr-defined]
     return repository
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from app.api.deps import ServicesDep
+from app.api.deps import ReadinessDep
 from app.api.openapi import problem_responses
 
 router = APIRouter(tags=["health"])
@@ -19,7 +19,6 @@ def healthz() -> dict[str, str]:
 @router.get("/readyz", summary="Readiness: database and library",
             responses=problem_responses(
                 (503, "The database does not answer or the library is not loaded.")))
-def readyz(services: ServicesDep) -> dict[str, object]:
+def readyz(readiness: ReadinessDep) -> dict[str, object]:
     """The database answers and the template library is loaded (503 otherwise)."""
-    services.repository.ping()
-    return {"status": "ready", "templates": len(services.templates.index())}
+    return {"status": "ready", "templates": readiness.check()}

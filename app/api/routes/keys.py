@@ -13,10 +13,9 @@ from fastapi import APIRouter, Request, status
 from pydantic import BaseModel, ConfigDict, Field
 from starlette.concurrency import run_in_threadpool
 
-from app.api.deps import AdminKey, AnyKey, ServicesDep
+from app.api.deps import AdminKey, AnyKey, KeysDep
 from app.api.openapi import problem_responses
 from app.api.revocations import open_websockets
-from app.services.access import issue_api_key
 from app.store.records import ApiKeyRecord, ApiKeyRole
 
 router = APIRouter(tags=["keys"])
@@ -45,24 +44,24 @@ def whoami(key: AnyKey) -> dict[str, Any]:
 
 
 @router.get("/keys", summary="List API keys", responses=problem_responses(403, 503))
-def list_keys(services: ServicesDep, _: AdminKey) -> dict[str, Any]:
+def list_keys(keys: KeysDep, _: AdminKey) -> dict[str, Any]:
     """Every key, revoked ones included (never their secrets)."""
-    return {"keys": [_key(k) for k in services.repository.list_api_keys()]}
+    return {"keys": [_key(k) for k in keys.list()]}
 
 
 @router.post("/keys", status_code=status.HTTP_201_CREATED, summary="Issue an API key",
              responses=problem_responses(403, 503))
-def create_key(body: CreateKeyRequest, services: ServicesDep, _: AdminKey) -> dict[str, Any]:
+def create_key(body: CreateKeyRequest, keys: KeysDep, _: AdminKey) -> dict[str, Any]:
     """Issue a key; the answer holds its secret, shown this once."""
-    record, secret = issue_api_key(services.repository, body.role, body.name)
+    record, secret = keys.issue(body.role, body.name)
     return {**_key(record), "key": secret}
 
 
 @router.delete("/keys/{key_id}", summary="Revoke an API key",
                responses=problem_responses(403, 404, 503))
-async def revoke_key(key_id: str, request: Request, services: ServicesDep,
+async def revoke_key(key_id: str, request: Request, keys: KeysDep,
                      _: AdminKey) -> dict[str, Any]:
     """Revoke a key for good; its open websockets are closed (code 4401) before this answers."""
-    record = await run_in_threadpool(services.repository.revoke_api_key, key_id)
+    record = await run_in_threadpool(keys.revoke, key_id)
     await open_websockets(request.app).close_key(key_id)
     return _key(record)

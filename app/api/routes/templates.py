@@ -13,10 +13,9 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Path, Query, status
 from pydantic import BaseModel, Field
 
-from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.api.deps import CatalogDep, CurationDep, CuratorKey, ReadAccess
 from app.api.openapi import problem_responses
 from app.domain.models import Category, HazardTemplate, TemplateStatus
-from app.services import curation, template_listing
 from app.services.curation import Curated
 from app.services.template_listing import SortOrder, TemplateSortKey
 from app.store.records import ApiKeyRecord
@@ -72,7 +71,7 @@ class TemplateListResponse(BaseModel):
 @router.get("/templates", summary="List, search, sort and page templates",
             response_model=TemplateListResponse, responses=problem_responses(503))
 def list_templates(
-    services: ServicesDep,
+    catalog: CatalogDep,
     _: ReadAccess,
     category: Category | None = None,
     hazard_class: str | None = None,
@@ -93,11 +92,8 @@ def list_templates(
 ) -> dict[str, Any]:
     """Templates at their current version, filtered by category, class, status and search words,
     sorted by one column, optionally one page at a time (`total` counts every match)."""
-    templates = services.repository.list_templates(
-        category=category, hazard_class=hazard_class, status=status
-    )
-    found = template_listing.page(templates, text=q, sort=sort, order=order, offset=offset,
-                                  limit=limit)
+    found = catalog.page(category=category, hazard_class=hazard_class, status=status, text=q,
+                         sort=sort, order=order, offset=offset, limit=limit)
     return {"count": len(found.templates), "total": found.total, "offset": offset,
             "limit": limit, "templates": [_template(t) for t in found.templates]}
 
@@ -105,27 +101,27 @@ def list_templates(
 @router.post("/templates/validate", summary="Validate a template without storing it",
              responses=problem_responses(503))
 def validate_template(
-    services: ServicesDep, _: ReadAccess, document: Any = _DOCUMENT
+    curation: CurationDep, _: ReadAccess, document: Any = _DOCUMENT
 ) -> dict[str, Any]:
     """Validate a template without storing it: `valid`, `errors` and `warnings`."""
-    return curation.validate(services, document).as_dict()
+    return curation.validate(document).as_dict()
 
 
 @router.post("/templates", status_code=status.HTTP_201_CREATED,
              summary="Create a template (a draft)",
              responses=problem_responses(403, (409, "A template with this id exists."), 503))
 def create_template(
-    services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
+    curation: CurationDep, key: CuratorKey, document: Any = _DOCUMENT
 ) -> dict[str, Any]:
     """Validate a new template and store it as a draft (activate it to put it to use)."""
-    return _curated(curation.create(services, document, _author(key)))
+    return _curated(curation.create(document, _author(key)))
 
 
 @router.get("/templates/{template_id}", summary="Read a template with its versions",
             responses=problem_responses(404, 503))
-def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
+def get_template(template_id: str, catalog: CatalogDep, _: ReadAccess) -> dict[str, Any]:
     """One template at its current version, with every version kept."""
-    history = services.repository.get_template_history(template_id)
+    history = catalog.history(template_id)
     body = _template(history.current)
     body["versions"] = [v.model_dump(mode="json") for v in history.versions]
     return body
@@ -134,36 +130,37 @@ def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict
 @router.get("/templates/{template_id}/versions/{version}",
             summary="Read one version of a template", responses=problem_responses(404, 503))
 def get_template_version(
-    template_id: str, version: Annotated[int, Path(ge=1, le=MAX_VERSION)], services: ServicesDep,
+    template_id: str, version: Annotated[int, Path(ge=1, le=MAX_VERSION)], catalog: CatalogDep,
     _: ReadAccess,
 ) -> dict[str, Any]:
     """One template as it was at one version (contracts name the versions they used)."""
-    return _template(services.repository.get_template(template_id, version))
+    return _template(catalog.version(template_id, version))
 
 
 @router.put("/templates/{template_id}", summary="Revise a template (a new version)",
             responses=problem_responses(
                 403, 404, (409, "Revised concurrently, or its id does not match."), 503))
 def revise_template(
-    template_id: str, services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
+    template_id: str, curation: CurationDep, key: CuratorKey, document: Any = _DOCUMENT
 ) -> dict[str, Any]:
     """Store a revision as the next version; earlier versions stay readable."""
-    return _curated(curation.revise(services, template_id, document, _author(key)))
+    return _curated(curation.revise(template_id, document, _author(key)))
 
 
 @router.post("/templates/{template_id}/activate", summary="Activate a template",
              responses=problem_responses(
                  403, 404, (409, "Its status or validity does not allow it."), 503))
-def activate_template(template_id: str, services: ServicesDep, _: CuratorKey) -> dict[str, Any]:
+def activate_template(template_id: str, curation: CurationDep,
+                      _: CuratorKey) -> dict[str, Any]:
     """Put a template to use: the gate binds it from the next request on."""
-    return _template(curation.activate(services, template_id))
+    return _template(curation.activate(template_id))
 
 
 @router.post("/templates/{template_id}/deprecate", summary="Deprecate a template",
              responses=problem_responses(
                  403, 404, (409, "Its status does not allow it."), 503))
 def deprecate_template(
-    template_id: str, services: ServicesDep, _: CuratorKey
+    template_id: str, curation: CurationDep, _: CuratorKey
 ) -> dict[str, Any]:
     """Retire a template: the gate stops binding it; its versions stay readable."""
-    return _template(curation.deprecate(services, template_id))
+    return _template(curation.deprecate(template_id))
