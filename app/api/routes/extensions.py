@@ -18,6 +18,7 @@ from app.api import analysis_jobs
 from app.api.deps import CuratorKey, ExtensionsDep, MetricsDep, PoolDep, ReadAccess
 from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.openapi import problem_responses
+from app.api.read_schemas import PendingExtensionsResponse
 from app.api.schemas import GateResponse
 from app.services.extensions import PendingClass, WaitingRequest
 
@@ -71,13 +72,14 @@ def _group(group: PendingClass) -> dict[str, Any]:
     }
 
 
-@router.get("/extensions/pending", summary="List requests waiting for the library",
-            responses=problem_responses(503))
-def pending_extensions(extensions: ExtensionsDep, _: ReadAccess) -> dict[str, Any]:
+@router.get("/extensions/pending", response_model=PendingExtensionsResponse,
+            summary="List requests waiting for the library", responses=problem_responses(503))
+def pending_extensions(extensions: ExtensionsDep, _: ReadAccess) -> PendingExtensionsResponse:
     """Requests waiting for a library extension, grouped by hazard class."""
     groups = extensions.pending_by_class()
     request_ids = {w.record.id for g in groups for w in g.requests}
-    return {"count": len(request_ids), "classes": [_group(g) for g in groups]}
+    return PendingExtensionsResponse.model_validate(
+        {"count": len(request_ids), "classes": [_group(g) for g in groups]})
 
 
 @router.post("/extensions/reevaluate", response_model=ReevaluateClassResponse,

@@ -20,6 +20,7 @@ from app.api.examples import ANSWERS_EXAMPLES, GATE_EXAMPLES
 from app.api.limits import check_gate_request
 from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.openapi import problem_responses
+from app.api.read_schemas import GateRecordResponse
 from app.api.schemas import GateResponse
 from app.domain.models import GateRequest
 
@@ -56,15 +57,14 @@ async def post_gate(
     return _json(await pool.run(analysis_jobs.decide, request, reference_plan), metrics)
 
 
-@router.get("/gate/{request_id}", summary="Read a decision's audit record",
-            responses=problem_responses(404, 503))
-def get_gate(request_id: str, audit_trail: AuditTrailDep) -> dict[str, Any]:
+@router.get("/gate/{request_id}", response_model=GateRecordResponse,
+            summary="Read a decision's audit record", responses=problem_responses(404, 503))
+def get_gate(request_id: str, audit_trail: AuditTrailDep) -> GateRecordResponse:
     """The audit record of one decided request, with the decisions that followed it."""
     entry = audit_trail.entry(request_id)
-    body = entry.record.model_dump(mode="json", by_alias=True)
-    body["request_id"] = entry.record.id
-    body["followed_by"] = list(entry.followed_by)
-    return body
+    record = entry.record
+    return GateRecordResponse.model_validate({
+        **dict(record), "request_id": record.id, "followed_by": list(entry.followed_by)})
 
 
 @router.post("/gate/{request_id}/answers", response_model=GateResponse,
