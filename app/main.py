@@ -2,10 +2,12 @@
 and the routes. Nothing is built at import time; everything lives in the lifespan.
 
 Start-up: connect, migrate (`alembic upgrade head`), seed the template library idempotently, load
-the active templates into memory, build the analyzer, start the analysis pool's workers (Stages
-1-5 run there, off the event loop), the monitoring service (on PostgreSQL with the LISTEN/NOTIFY
-fan-out that carries halts to the other replicas' listeners) and the watch that closes websockets
-of revoked keys. A failure there stops the start-up (it never serves with a half-built gate).
+the active templates into memory, build the analyzer and every service (`build_components`), the
+gatekeeper that checks API keys, start the analysis pool's workers (Stages 1-5 run there, off the
+event loop), the monitoring service (on PostgreSQL with the LISTEN/NOTIFY fan-out that carries
+halts to the other replicas' listeners) and the watch that closes websockets of revoked keys.
+Each lands on `app.state`, from where `app/api/deps.py` hands it to the routes that use it.
+A failure there stops the start-up (it never serves with a half-built gate).
 """
 
 from __future__ import annotations
@@ -19,7 +21,8 @@ from fastapi import Depends, FastAPI
 
 from app.adapters.tracing import start_tracing
 from app.api import docs, observability, openapi, problems, revocations
-from app.api.deps import require_key_when_locked, robot_writes
+from app.api.auth import Gatekeeper, RouteAccess
+from app.api.deps import check_access, robot_writes
 from app.api.limits import json_body_within_limits
 from app.api.routes import (
     contracts,
@@ -35,7 +38,7 @@ from app.api.routes import (
 )
 from app.config import Settings
 from app.metrics import Metrics
-from app.services import Services, build_services
+from app.services import Components, build_components
 from app.services.analysis_pool import AnalysisPool
 from app.services.monitoring_fanout import monitoring_for
 
@@ -57,19 +60,23 @@ def create_app(settings: Settings | None = None, *, span_exporter: Any = None) -
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-        services: Services = build_services(resolved, metrics=metrics)
-        app.state.services = services
-        pool = AnalysisPool(resolved, services.templates, services.metrics, tracing)
+        components: Components = build_components(resolved, metrics=metrics)
+        app.state.components = components
+        # Read once every route is in place, routers' dependencies included.
+        app.state.gatekeeper = Gatekeeper(components.keys, RouteAccess(app.routes),
+                                          mode=resolved.auth, public_docs=resolved.public_docs)
+        pool = AnalysisPool(resolved, components.templates, metrics, tracing)
         try:
             await pool.start()
             app.state.analysis_pool = pool
-            async with (monitoring_for(services) as (app.state.monitoring,
-                                                    app.state.monitor_fanout),
-                        revocations.watching(app, services)):
+            async with (monitoring_for(resolved.database_url, components.monitor_service) as (
+                            app.state.monitoring, app.state.monitor_fanout),
+                        revocations.watching(app, components.keys,
+                                             resolved.revocation_poll_seconds)):
                 yield
         finally:
             await anyio.to_thread.run_sync(pool.close)
-            services.close()
+            components.close()
             metrics.process_exiting()
             tracing.shutdown()
 
@@ -78,9 +85,10 @@ def create_app(settings: Settings | None = None, *, span_exporter: Any = None) -
         version="0.1.0",
         summary="Pre-execution safety gate and Task Safety Contracts for LLM-controlled robots",
         lifespan=lifespan,
-        # With SAFEGATE_AUTH=keys, every route (websockets too) needs a valid key; every JSON
-        # body is checked for depth, numbers and unstorable text before any route sees it.
-        dependencies=[Depends(require_key_when_locked), Depends(json_body_within_limits)],
+        # The one access check per request (websockets too): the caller against what the route
+        # declares, and with SAFEGATE_AUTH=keys a valid key everywhere; every JSON body is
+        # checked for depth, numbers and unstorable text before any route sees it.
+        dependencies=[Depends(check_access), Depends(json_body_within_limits)],
         # The schema and the docs pages are routes of ours (`app/api/docs.py`): with
         # SAFEGATE_AUTH=keys they need a key like any other (SAFEGATE_PUBLIC_DOCS opens them),
         # and they load their assets from the app, not a CDN.

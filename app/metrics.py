@@ -27,6 +27,8 @@ from prometheus_client import (
     multiprocess,
 )
 
+from app.domain.gate import Decision, Rule
+
 _LATENCY_BUCKETS = (0.0005, 0.001, 0.002, 0.003, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 1.0, 5.0)
 MULTIPROC_DIR_ENV = "PROMETHEUS_MULTIPROC_DIR"
 
@@ -111,8 +113,9 @@ class Metrics:
             registry=self.registry, multiprocess_mode="livesum",
         )
 
-    def record_decision(self, decision: str, rule: str, timings_ms: dict[str, float]) -> None:
-        self.decisions.labels(decision, rule).inc()
+    def record_decision(self, decision: Decision, rule: Rule,
+                        timings_ms: dict[str, float]) -> None:
+        self.decisions.labels(decision.value, rule.value).inc()
         for stage, milliseconds in timings_ms.items():
             if stage != "total":
                 self.gate_stage_seconds.labels(stage).observe(milliseconds / 1000)

@@ -1,6 +1,6 @@
 """The worker-process half of the deciding routes: Stages 1-5 and their answers' JSON.
 
-Each job is `job(services, *args)` with the worker's `Services` (see
+Each job is `job(deciders, *args)` with the worker's `Deciders` (see
 `app/services/analysis_pool.py`); the routes run them with `pool.run(job, ...)`, so the
 analysis, the audit write and the answer's encoding all happen off the event loop. A job returns
 the answer's JSON text plus what the app's own metrics count (the worker's metrics are never
@@ -15,9 +15,10 @@ from typing import Any
 
 from app.api.schemas import gate_response
 from app.api.verify_schemas import VerifyRequest, verify_response
+from app.domain.gate import Decision, Rule
 from app.domain.models import GateRequest
 from app.metrics import Metrics
-from app.services import Services, extensions, gate, verification
+from app.services import Deciders, verification
 from app.services.gate import Decided
 
 
@@ -26,8 +27,8 @@ class GateAnswer:
     """A decision's answer (GateResponse JSON) and what the metrics count of it."""
 
     body: str
-    decision: str
-    rule: str
+    decision: Decision
+    rule: Rule
     timings_ms: dict[str, float]
     record_id: str = ""
     """The audit record's id (answered in `X-Gate-Request-ID` too)."""
@@ -48,35 +49,36 @@ class VerifyAnswer:
 
 
 def _answer(decided: Decided) -> GateAnswer:
+    decision = decided.result.decision
     return GateAnswer(body=gate_response(decided).model_dump_json(),
-                      decision=decided.record.decision, rule=decided.record.rule,
-                      timings_ms=decided.result.timings_ms, record_id=str(decided.record.id))
+                      decision=decision.decision, rule=decision.rule,
+                      timings_ms=decided.result.timings_ms, record_id=decided.request_id)
 
 
-def decide(services: Services, request: GateRequest, with_reference_plan: bool = False
+def decide(deciders: Deciders, request: GateRequest, with_reference_plan: bool = False
            ) -> GateAnswer:
     """POST /gate: Stages 1-4 and the audit record (and, asked for, the reference plan)."""
-    return _answer(gate.decide(services, request, with_reference_plan=with_reference_plan))
+    return _answer(deciders.gate.decide(request, with_reference_plan=with_reference_plan))
 
 
-def answer(services: Services, request_id: str, answers: dict[str, Any]) -> GateAnswer:
+def answer(deciders: Deciders, request_id: str, answers: dict[str, Any]) -> GateAnswer:
     """POST /gate/{id}/answers: the answers folded in, decided again."""
-    return _answer(gate.answer(services, request_id, answers))
+    return _answer(deciders.gate.answer(request_id, answers))
 
 
-def reevaluate_request(services: Services, request_id: str) -> GateAnswer:
+def reevaluate_request(deciders: Deciders, request_id: str) -> GateAnswer:
     """POST /gate/{id}/reevaluate: a waiting request decided again with today's library."""
-    return _answer(extensions.reevaluate_request(services, request_id))
+    return _answer(deciders.extensions.reevaluate_request(request_id))
 
 
-def reevaluate_class(services: Services, hazard_class: str) -> tuple[str, list[GateAnswer]]:
+def reevaluate_class(deciders: Deciders, hazard_class: str) -> tuple[str, list[GateAnswer]]:
     """POST /extensions/reevaluate: every request waiting on a class decided again.
 
     Returns:
         The response's JSON text, and each new decision for the metrics.
     """
     results = [(old, _answer(decided))
-               for old, decided in extensions.reevaluate_class(services, hazard_class)]
+               for old, decided in deciders.extensions.reevaluate_class(hazard_class)]
     items = ",".join(
         f'{{"reevaluated_request_id":{json.dumps(old)},"decision":{answered.body}}}'
         for old, answered in results)
@@ -85,10 +87,9 @@ def reevaluate_class(services: Services, hazard_class: str) -> tuple[str, list[G
     return body, [answered for _, answered in results]
 
 
-def verify(services: Services, request: VerifyRequest) -> VerifyAnswer:
+def verify(deciders: Deciders, request: VerifyRequest) -> VerifyAnswer:
     """POST /verify: Stage 5, with the contract's attempt budget and audit trail."""
-    verified = verification.verify(
-        services,
+    verified = deciders.verification.verify(
         request.plan,
         contract_id=request.contract_id,
         contract=None if request.contract is None else request.contract.to_domain(),

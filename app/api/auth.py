@@ -1,14 +1,18 @@
-"""API keys on HTTP and websocket connections: who is calling, and may they?
+"""API keys on HTTP and websocket connections: who is calling, and may they? Checked once.
 
 In: a connection's `Authorization: Bearer <key>` or `X-API-Key` header, read by FastAPI's
 `HTTPBearer` and `APIKeyHeader` (which also declare both security schemes in the OpenAPI
 document), for websockets also an `api_key` query parameter (browsers cannot set headers on
-them); the services (settings and
-repository) and the roles an endpoint accepts. Out: the caller's `ApiKeyRecord`, or None for an
-endpoint left open in `auth=open` mode. Fails: `Unauthorized` (401) when a key is needed and
-missing, or presented but unknown, revoked or malformed (a presented key is always checked, even
-where none is needed); `Forbidden` (403) when the key's role is not accepted. On websockets both
-become a `WebSocketException` with close code 1008 before the handshake is accepted.
+them); the `Access` each route declares (through the aliases of `app/api/deps.py`). Out: the
+caller's `ApiKeyRecord`, or None for an endpoint left open in `auth=open` mode.
+One app-wide dependency runs the check once per request: the `Gatekeeper` looks the key up
+(once per connection) and holds it against every `Access` the matched route declares (a route
+that declares none needs what every route needs: any valid key with `auth=keys`); the route's
+own alias then only reads the key it let through.
+Fails: `Unauthorized` (401) when a key is needed and missing, or presented but unknown, revoked
+or malformed (a presented key is always checked, even where none is needed); `Forbidden` (403)
+when the key's role is not accepted. On websockets both become a `WebSocketException` with close
+code 1008 before the handshake is accepted.
 
 Roles: robot (gate, answers, verify, monitor), curator (template writes, re-evaluation), admin
 (keys, and everything the others may do). Template writes and re-evaluation always need a key;
@@ -19,19 +23,20 @@ and the docs pages need a key too unless `SAFEGATE_PUBLIC_DOCS=true` opens them.
 
 from __future__ import annotations
 
-from collections.abc import Collection, MutableMapping
-from typing import Any
+from collections.abc import Collection, MutableMapping, Sequence
+from dataclasses import dataclass
+from typing import Any, Literal
 
+from fastapi.routing import iter_route_contexts
 from fastapi.security import APIKeyHeader, HTTPAuthorizationCredentials, HTTPBearer
 from starlette.exceptions import WebSocketException
 from starlette.requests import HTTPConnection
+from starlette.routing import BaseRoute
 from starlette.status import WS_1008_POLICY_VIOLATION
-from starlette.websockets import WebSocket
 
 from app.api.docs import DOCS_PATHS
 from app.domain.errors import Forbidden, SafeGateError, Unauthorized
-from app.services import Services
-from app.services.access import find_key
+from app.services.access import KeyService
 from app.store.records import ApiKeyRecord, ApiKeyRole
 
 ROBOT_ROLES = frozenset({ApiKeyRole.ROBOT, ApiKeyRole.ADMIN})
@@ -42,6 +47,8 @@ ANY_ROLE = frozenset(ApiKeyRole)
 OPEN_PATHS = frozenset({"/healthz", "/readyz", "/curator", "/curator/"})
 OPEN_PREFIXES = ("/curator/static/",)
 _CACHE_ATTRIBUTE = "safegate_api_key"
+_CHECKED_ATTRIBUTE = "safegate_access_checked"
+_READ_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
 _HOW = "send 'Authorization: Bearer <key>' or 'X-API-Key: <key>'"
 
 
@@ -83,6 +90,66 @@ def presented_secret(connection: HTTPConnection, bearer: HTTPAuthorizationCreden
     return None
 
 
+@dataclass(frozen=True)
+class Access:
+    """What a route accepts: the roles, and whether `auth=open` lets it be called keyless.
+
+    `reads` (when set) are the roles accepted for GET, HEAD and OPTIONS instead of `roles`
+    (a robot router: anyone may read, robots write; websockets count as writes).
+    """
+
+    roles: frozenset[ApiKeyRole]
+    open_when_open: bool
+    reads: frozenset[ApiKeyRole] | None = None
+
+    def roles_for(self, connection: HTTPConnection) -> frozenset[ApiKeyRole]:
+        if self.reads is not None and connection.scope.get("method") in _READ_METHODS:
+            return self.reads
+        return self.roles
+
+
+EVERY_ROUTE = Access(ANY_ROLE, open_when_open=True)
+"""What every route needs, declared or not: nothing in `auth=open`, any valid key otherwise."""
+
+
+def _declared_in(dependant: object) -> list[Access]:
+    """The `Access` values a dependant's dependencies carry as `safegate_access`, at any depth."""
+    found: list[Access] = []
+    pending = list(getattr(dependant, "dependencies", ()))
+    while pending:
+        dependency = pending.pop()
+        access = getattr(dependency.call, "safegate_access", None)
+        if isinstance(access, Access):
+            found.append(access)
+        pending.extend(dependency.dependencies)
+    return found
+
+
+class RouteAccess:
+    """What each route of an app declares, its routers' dependencies included.
+
+    Built once the routes are in place (in the lifespan): a route included through a router
+    is matched as the router's own route object, whose dependencies lack those its inclusion
+    added (`include_router(..., dependencies=...)`), so they are read here from FastAPI's
+    effective routes. A route added later is read from its own dependencies.
+    """
+
+    def __init__(self, routes: Sequence[BaseRoute]) -> None:
+        self._table: dict[int, tuple[BaseRoute, list[Access]]] = {}
+        for context in iter_route_contexts(routes):
+            original = context.original_route
+            entry = self._table.setdefault(id(original), (original, []))
+            # A route included twice holds the requirements of both inclusions.
+            entry[1].extend(_declared_in(getattr(context, "dependant", None)))
+
+    def of(self, route: object) -> tuple[Access, ...]:
+        """The requirements of the matched route (`scope["route"]`)."""
+        entry = self._table.get(id(route))
+        if entry is not None and entry[0] is route:
+            return tuple(entry[1])
+        return tuple(_declared_in(getattr(route, "dependant", None)))
+
+
 def lookup_pending(connection: HTTPConnection, secret: str | None) -> bool:
     """Whether `authenticate` would query the database: a key was sent and not yet looked up.
 
@@ -98,63 +165,15 @@ def cached_key(scope: MutableMapping[str, Any]) -> ApiKeyRecord | None:
     return key
 
 
-def authenticate(connection: HTTPConnection, services: Services,
-                 secret: str | None = None) -> ApiKeyRecord | None:
-    """The caller's active key (looked up once per connection), or None when none was sent.
-
-    The first call on a connection is the app-wide dependency's, with the `secret` it read
-    through the security schemes (`presented_secret`); later calls (a route's own check, e.g.
-    `authorize_websocket`) get the key it found.
+def checked_key(connection: HTTPConnection) -> ApiKeyRecord | None:
+    """The key the app-wide check let through on this connection (None: open, none sent).
 
     Raises:
-        Unauthorized: a key was sent but is unknown, revoked or malformed.
+        Unauthorized: no check ran on this connection (an app built without it): fail closed.
     """
-    state = connection.scope.setdefault("state", {})
-    if _CACHE_ATTRIBUTE in state:
-        cached: ApiKeyRecord | None = state[_CACHE_ATTRIBUTE]
-        return cached
-    key = None
-    if secret is not None:
-        key = find_key(services.repository, secret)
-        if key is None:
-            raise Unauthorized("the API key is unknown or revoked")
-    state[_CACHE_ATTRIBUTE] = key
-    return key
-
-
-def authorize(
-    connection: HTTPConnection,
-    services: Services,
-    roles: Collection[ApiKeyRole],
-    *,
-    open_when_open: bool,
-    secret: str | None = None,
-) -> ApiKeyRecord | None:
-    """Check the caller against the roles an endpoint accepts.
-
-    Args:
-        connection: the HTTP request or websocket.
-        services: the app's services (settings and repository).
-        roles: the roles accepted.
-        open_when_open: True when the endpoint needs no key in `auth=open` mode.
-        secret: the key presented, as `presented_secret` read it (see `authenticate`).
-
-    Returns:
-        The caller's key, or None when the endpoint is open and no key was sent.
-
-    Raises:
-        Unauthorized: a key is needed and missing, or the key sent is not valid.
-        Forbidden: the key's role is not among `roles`.
-    """
-    key = authenticate(connection, services, secret)
-    if key is None:
-        if open_when_open and services.settings.auth == "open":
-            return None
-        raise Unauthorized(f"this endpoint needs an API key; {_HOW}")
-    if key.role not in roles:
-        wanted = " or ".join(sorted(role.value for role in roles))
-        raise Forbidden(f"a {key.role.value} key may not do this; it needs a {wanted} key")
-    return key
+    if not connection.scope.get("state", {}).get(_CHECKED_ATTRIBUTE):
+        raise Unauthorized("the API key was not checked on this connection")
+    return cached_key(connection.scope)
 
 
 def is_open_path(path: str, *, public_docs: bool = False) -> bool:
@@ -164,30 +183,87 @@ def is_open_path(path: str, *, public_docs: bool = False) -> bool:
             or (public_docs and path in DOCS_PATHS))
 
 
-def authorize_websocket(
-    websocket: WebSocket,
-    services: Services,
-    roles: Collection[ApiKeyRole] = ROBOT_ROLES,
-    *,
-    open_when_open: bool = True,
-) -> ApiKeyRecord | None:
-    """`authorize` for a websocket; call it before `websocket.accept()`.
+class Gatekeeper:
+    """Checks callers against routes' `Access`, looking each connection's key up once."""
 
-    Args:
-        websocket: the connection, whose key (header or `api_key` query parameter) the
-            app-wide dependency has read already; without it, no key counts as sent.
-        services: the app's services.
-        roles: the roles accepted (robots by default: the monitor's clients).
-        open_when_open: True when no key is needed in `auth=open` mode.
+    def __init__(self, keys: KeyService, routes: RouteAccess, *, mode: Literal["open", "keys"],
+                 public_docs: bool) -> None:
+        """Args:
+            keys: where presented keys are looked up.
+            routes: what each route declares.
+            mode: `SAFEGATE_AUTH`: `open` lets keyless callers use the open routes.
+            public_docs: `SAFEGATE_PUBLIC_DOCS`: the schema and docs pages need no key.
+        """
+        self._keys = keys
+        self.routes = routes
+        self.mode = mode
+        self.public_docs = public_docs
 
-    Returns:
-        The caller's key, or None when the endpoint is open and no key was sent.
+    def is_open(self, connection: HTTPConnection) -> bool:
+        """Whether this connection's path needs no key at all (probes, page shell, docs)."""
+        return is_open_path(connection.url.path, public_docs=self.public_docs)
 
-    Raises:
-        WebSocketException: code 1008 (policy violation) with the reason; Starlette then
-            refuses the handshake.
-    """
-    try:
-        return authorize(websocket, services, roles, open_when_open=open_when_open)
-    except SafeGateError as error:
-        raise WebSocketException(WS_1008_POLICY_VIOLATION, reason=error.detail) from error
+    def authenticate(self, connection: HTTPConnection,
+                     secret: str | None = None) -> ApiKeyRecord | None:
+        """The caller's active key (looked up once per connection), or None when none was sent.
+
+        Raises:
+            Unauthorized: a key was sent but is unknown, revoked or malformed.
+        """
+        state = connection.scope.setdefault("state", {})
+        if _CACHE_ATTRIBUTE in state:
+            cached: ApiKeyRecord | None = state[_CACHE_ATTRIBUTE]
+            return cached
+        key = None
+        if secret is not None:
+            key = self._keys.find(secret)
+            if key is None:
+                raise Unauthorized("the API key is unknown or revoked")
+        state[_CACHE_ATTRIBUTE] = key
+        return key
+
+    def check(self, connection: HTTPConnection, required: Collection[Access],
+              secret: str | None) -> ApiKeyRecord | None:
+        """Hold the caller against every requirement of the route, once.
+
+        Args:
+            connection: the HTTP request or websocket.
+            required: what the route declares (`EVERY_ROUTE` is always added).
+            secret: the key presented, as `presented_secret` read it.
+
+        Returns:
+            The caller's key, or None when every requirement is open and no key was sent.
+
+        Raises:
+            Unauthorized: a key is needed and missing, or the key sent is not valid.
+            Forbidden: the key's role is not accepted by some requirement.
+        """
+        key = self.authenticate(connection, secret)
+        for access in (EVERY_ROUTE, *required):
+            self._hold(connection, key, access)
+        connection.scope["state"][_CHECKED_ATTRIBUTE] = True
+        return key
+
+    def _hold(self, connection: HTTPConnection, key: ApiKeyRecord | None,
+              access: Access) -> None:
+        if key is None:
+            if access.open_when_open and self.mode == "open":
+                return
+            raise Unauthorized(f"this endpoint needs an API key; {_HOW}")
+        roles = access.roles_for(connection)
+        if key.role not in roles:
+            wanted = " or ".join(sorted(role.value for role in roles))
+            raise Forbidden(f"a {key.role.value} key may not do this; it needs a {wanted} key")
+
+    def open_path_checked(self, connection: HTTPConnection) -> None:
+        """Mark an open path's connection as checked (its key, if any, is ignored)."""
+        state = connection.scope.setdefault("state", {})
+        state.setdefault(_CACHE_ATTRIBUTE, None)
+        state[_CHECKED_ATTRIBUTE] = True
+
+
+def as_websocket_error(connection: HTTPConnection, error: SafeGateError) -> Exception:
+    """On a websocket, a 401/403 becomes close code 1008 before the handshake; else as is."""
+    if connection.scope.get("type") == "websocket":
+        return WebSocketException(WS_1008_POLICY_VIOLATION, reason=error.detail)
+    return error

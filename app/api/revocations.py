@@ -27,7 +27,7 @@ from fastapi import FastAPI
 
 from app.api.auth import cached_key
 from app.domain.errors import SafeGateError
-from app.services import Services
+from app.services.access import KeyService
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
@@ -133,7 +133,7 @@ class RevocationMiddleware:
                 registry.discard(connection)
 
 
-async def _poll(app: FastAPI, services: Services, seconds: float) -> None:
+async def _poll(app: FastAPI, keys: KeyService, seconds: float) -> None:
     registry = open_websockets(app)
     while True:
         await asyncio.sleep(seconds)
@@ -142,7 +142,7 @@ async def _poll(app: FastAPI, services: Services, seconds: float) -> None:
             continue
         try:
             revoked = await anyio.to_thread.run_sync(
-                services.repository.revoked_api_key_ids, key_ids)
+                keys.revoked, key_ids)
         except SafeGateError:
             _log.exception("could not check open websockets' keys for revocation")
             continue
@@ -152,10 +152,10 @@ async def _poll(app: FastAPI, services: Services, seconds: float) -> None:
 
 
 @contextlib.asynccontextmanager
-async def watching(app: FastAPI, services: Services) -> AsyncIterator[None]:
+async def watching(app: FastAPI, keys: KeyService, poll_seconds: float) -> AsyncIterator[None]:
     """Poll for revoked keys of open websockets while the app runs."""
     task = asyncio.get_running_loop().create_task(
-        _poll(app, services, services.settings.revocation_poll_seconds))
+        _poll(app, keys, poll_seconds))
     try:
         yield
     finally:

@@ -154,7 +154,8 @@ def suggested_template(proposal: HazardProposal) -> dict[str, Any]:
 
 
 def gate_response(decided: Decided) -> GateResponse:
-    result, record = decided.result, decided.record
+    """The answer to a decision, made from the same value as its audit record."""
+    result = decided.result
     decision = result.decision
     triggers = [f"{h.hazard_class}: {h.mechanism}" for h in decision.trigger_hazards] + [
         f"unknown {u.attribute}: {u.description}" for u in decision.trigger_unknowns
@@ -163,21 +164,21 @@ def gate_response(decided: Decided) -> GateResponse:
     suggestions = [
         suggested_template(u.proposal)
         for u in result.binding.unbound
-        if decision.defer_kind is not None and decision.defer_kind.value == "extend_library"
+        if decision.defer_kind is DeferKind.EXTEND_LIBRARY
     ]
     return GateResponse(
-        request_id=str(record.id),
-        decision=decision.decision.value,
-        rule=decision.rule.value,
-        defer_kind=decision.defer_kind.value if decision.defer_kind else None,
+        request_id=decided.request_id,
+        decision=decision.decision,
+        rule=decision.rule,
+        defer_kind=decision.defer_kind,
         question=decision.question,
         reason=decision.reason,
         hazards=hazards_out(result.binding),
         unknowns=[unknown_out(u) for u in result.report.unknowns],
         triggers=triggers,
-        contract_id=record.contract_id,
+        contract_id=decided.contract_id,
         analyzer=result.report.analyzer,
-        parent_request_id=record.parent_request_id,
+        parent_request_id=decided.parent_request_id,
         timings_ms={k: round(v, 3) for k, v in result.timings_ms.items()},
         suggested_templates=suggestions,
         reference_plan=reference,

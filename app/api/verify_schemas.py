@@ -184,7 +184,7 @@ def verify_response(verified: Verified) -> VerifyResponse:
         reason=result.reason,
         attempts=verified.attempts,
         attempts_left=verified.attempts_left,
-        decision=verified.decision,
+        decision=None if verified.decision is None else verified.decision.value,
         downgraded=verified.downgraded,
         contract_id=verified.contract_id,
         states_checked=result.states_checked,

@@ -55,21 +55,21 @@ def _request(command: str, scene_file: Path | None) -> GateRequest:
 def _decide(request: GateRequest, *, reference_plan: bool = False) -> GateResponse:
     from app.api.limits import check_gate_request
     from app.api.schemas import gate_response
-    from app.services import build_services, gate
+    from app.services import build_components
 
     configured = settings()
     try:
         check_gate_request(request, configured)
-        services = build_services(configured)
+        components = build_components(configured)
     except SafeGateError as error:
         fail(f"error: {error.detail}")
     try:
-        return gate_response(gate.decide(services, request,
-                                         with_reference_plan=reference_plan))
+        return gate_response(components.deciders.gate.decide(
+            request, with_reference_plan=reference_plan))
     except SafeGateError as error:
         fail(f"error: {error.detail}")
     finally:
-        services.close()
+        components.close()
 
 
 def _render(response: GateResponse) -> None:

@@ -9,14 +9,17 @@ database errors.
 from __future__ import annotations
 
 import secrets
+from collections.abc import Collection
 
-from app.store import Repository, hash_api_key
 from app.store.records import ApiKeyRecord, ApiKeyRole
+from app.store.repository import hash_api_key
+from app.store.repository.access import AccessQueries
 
 KEY_PREFIX = "sg_"
 
 
-def issue_api_key(repository: Repository, role: ApiKeyRole, name: str) -> tuple[ApiKeyRecord, str]:
+def issue_api_key(repository: AccessQueries, role: ApiKeyRole,
+                  name: str) -> tuple[ApiKeyRecord, str]:
     """Create a key with a fresh random secret.
 
     Args:
@@ -32,8 +35,39 @@ def issue_api_key(repository: Repository, role: ApiKeyRole, name: str) -> tuple[
     return record, secret
 
 
-def find_key(repository: Repository, secret: str) -> ApiKeyRecord | None:
+def find_key(repository: AccessQueries, secret: str) -> ApiKeyRecord | None:
     """The active key a client presented, or None when it is unknown or revoked."""
     if not secret:
         return None
     return repository.find_active_api_key(hash_api_key(secret))
+
+
+class KeyService:
+    """API keys for the API: issue, list, revoke, and look up the key a caller presented."""
+
+    def __init__(self, access: AccessQueries) -> None:
+        self._access = access
+
+    def issue(self, role: ApiKeyRole, name: str) -> tuple[ApiKeyRecord, str]:
+        """A new key and its secret (see `issue_api_key`)."""
+        return issue_api_key(self._access, role, name)
+
+    def find(self, secret: str) -> ApiKeyRecord | None:
+        """The active key with this secret, or None."""
+        return find_key(self._access, secret)
+
+    def list(self) -> list[ApiKeyRecord]:
+        """Every key, revoked ones included."""
+        return self._access.list_api_keys()
+
+    def revoke(self, key_id: str) -> ApiKeyRecord:
+        """Revoke a key for good.
+
+        Raises:
+            NotFound: no such key.
+        """
+        return self._access.revoke_api_key(key_id)
+
+    def revoked(self, key_ids: Collection[str]) -> set[str]:
+        """Which of these key ids are revoked."""
+        return self._access.revoked_api_key_ids(key_ids)

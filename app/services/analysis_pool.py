@@ -1,14 +1,15 @@
 """The analysis pool: Stages 1-5 run in worker processes, so nothing on the event loop waits
 behind another request's analysis.
 
-In: a job (a module-level function `job(services, *args)`, picklable by reference) and its
+In: a job (a module-level function `job(deciders, *args)`, picklable by reference) and its
 arguments, from an async route. Out: the job's return value, awaited without blocking the loop.
 The analysis is CPU-bound Python (and an LLM analyzer blocks on the network for up to its
 timeout), so a thread would still hold the GIL against the loop; processes do not. Websockets,
 probes and reads stay on the loop and never queue behind an analysis.
 
 Sizing: `gate_workers` processes (0: one per core the process may use), each with its own
-`Services` (engine, repository, template cache, analyzer; no migration or seeding), at niceness
+`Deciders` (the gate, extension and verification services on its own engine, template cache
+and analyzer; no migration or seeding), at niceness
 `gate_worker_nice` so the loop's process gets a core first. At most `gate_workers + gate_queue`
 jobs are in the pool at once; one more raises `Busy` (503 with Retry-After, estimated from the
 recent job times and the queue) instead of letting the queue, and every caller's wait, grow.
@@ -47,10 +48,10 @@ import anyio.to_thread
 from app.adapters.tracing import Tracing, stages
 from app.config import Settings
 from app.domain.errors import Busy, Unavailable
-from app.domain.gate import GatePolicy
 from app.metrics import Metrics, pid_alive
-from app.services.container import Services, TemplateCache, build_analyzer
-from app.store import Repository, create_engine_for
+from app.services.container import Deciders, build_deciders
+from app.services.template_cache import TemplateCache
+from app.store import Repositories, create_engine_for
 
 P = ParamSpec("P")
 T = TypeVar("T")
@@ -72,24 +73,19 @@ def default_workers() -> int:
         return max(1, os.cpu_count() or 1)
 
 
-# The worker side: one `Services` per worker process, built by `_init_worker`.
-_worker_services: Services | None = None
+# The worker side: one `Deciders` and template cache per worker process, built by
+# `_init_worker`.
+_worker_deciders: Deciders | None = None
+_worker_templates: TemplateCache | None = None
 _worker_templates_version = -1
 
 
-def build_worker_services(settings: Settings) -> Services:
+def build_worker_deciders(settings: Settings) -> tuple[Deciders, TemplateCache]:
     """A worker's services: the app's database and analyzer, without migrating or seeding."""
-    engine = create_engine_for(settings.database_url)
-    repository = Repository(engine)
-    return Services(
-        settings=settings,
-        engine=engine,
-        repository=repository,
-        templates=TemplateCache(repository),
-        analyzer=build_analyzer(settings, cache=repository),
-        policy=GatePolicy(theta=settings.theta),
-        metrics=Metrics(),  # the worker's own, unread: the jobs return what the app counts
-    )
+    repositories = Repositories.on(create_engine_for(settings.database_url))
+    templates = TemplateCache(repositories.templates)
+    # The worker's own metrics, never read: the jobs return what the app counts.
+    return build_deciders(settings, repositories, templates, Metrics()), templates
 
 
 def _started_at(pid: int) -> str | None:
@@ -122,28 +118,28 @@ def _watch_owner(owner: int) -> None:
 
 
 def _init_worker(settings: Settings, templates_version: int, owner: int) -> None:
-    global _worker_services, _worker_templates_version
+    global _worker_deciders, _worker_templates, _worker_templates_version
     # The app's process owns the workers' lifetime; Ctrl-C reaches the whole process group.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     _watch_owner(owner)
     if settings.gate_worker_nice:
         os.nice(settings.gate_worker_nice)
-    _worker_services = build_worker_services(settings)
+    _worker_deciders, _worker_templates = build_worker_deciders(settings)
     _worker_templates_version = templates_version
 
 
 def _run_job(templates_version: int, job: Job[T], args: tuple[Any, ...],
              trace_stages: bool = False) -> tuple[T, float, stages.StageTrace | None]:
     global _worker_templates_version
-    services = _worker_services
-    if services is None:  # pragma: no cover - the initializer always ran
+    deciders, templates = _worker_deciders, _worker_templates
+    if deciders is None or templates is None:  # pragma: no cover - the initializer always ran
         raise Unavailable("the analysis worker was not initialised")
     if templates_version != _worker_templates_version:
-        services.templates.refresh()
+        templates.refresh()
         _worker_templates_version = templates_version
     started = time.perf_counter()
     with stages.recording(trace_stages) as trace:
-        result = job(services, *args)
+        result = job(deciders, *args)
     return result, time.perf_counter() - started, trace
 
 
@@ -203,7 +199,7 @@ class AnalysisPool:
         return max(1, min(RETRY_AFTER_MAX_SECONDS, math.ceil(seconds)))
 
     async def run(self, job: Callable[..., T], *args: Any) -> T:
-        """Run `job(services, *args)` in a worker and return its result.
+        """Run `job(deciders, *args)` in a worker and return its result.
 
         Raises:
             Busy: the workers are busy and the queue is full.

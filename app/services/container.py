@@ -1,7 +1,11 @@
-"""The service container: everything a running gate needs, built once per app in the lifespan.
+"""The composition root: every service of one app, built once per process.
 
-In: settings. Out: `Services` (engine, repository, template cache, analyzer, reader, policy).
-The analyzer is symbolic, LLM (through `app.adapters.llm`, cached in the repository) or their
+In: settings. Out: `Components` (built in the app's lifespan by `build_components`: connect,
+migrate, seed, load the templates, build the analyzer and every service) and `Deciders` (the
+services Stages 1-5 run in, built again in each analysis worker by `build_deciders`). Each
+service takes only what it uses, by name; `app/api/deps.py` hands each one to the routes through
+its own `Annotated` alias, so no route or service ever sees this container.
+The analyzer is symbolic, LLM (through `app.adapters.llm`, cached in the store) or their
 ensemble, as `SAFEGATE_ANALYZER` says; the reader, which reads an authorized command into the
 task's scope, is always the symbolic analyzer (the same instance when it is the analyzer).
 Fails: any start-up failure (database unreachable, migration or seed error) propagates, so the
@@ -11,61 +15,62 @@ app never serves with a half-built gate.
 from __future__ import annotations
 
 import threading
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from sqlalchemy.engine import Engine
 
 from app.adapters.llm import AnalysisCache, LitellmClient, LlmAnalyzer, LlmConfig
 from app.config import Settings
 from app.domain.analysis import SymbolicAnalyzer
-from app.domain.binding import TemplateIndex
 from app.domain.ensemble import EnsembleAnalyzer
 from app.domain.gate import GatePolicy
 from app.domain.pipeline import Analyzer, Reader
 from app.metrics import Metrics
-from app.store import Repository, create_engine_for, migrate, seed_templates
+from app.services.access import KeyService
+from app.services.audit_trail import AuditTrail
+from app.services.curation import CurationService
+from app.services.extensions import ExtensionService
+from app.services.gate import GateService
+from app.services.monitoring import MonitorService
+from app.services.readiness import ReadinessProbe
+from app.services.template_cache import TemplateCache
+from app.services.template_catalog import TemplateCatalog
+from app.services.verification import VerificationService
+from app.store import Repositories, create_engine_for, migrate, seed_templates
 from app.store.db import startup_lock
 
 
-class TemplateCache:
-    """The active templates in memory, reloaded after a curator changes the library.
+@dataclass(frozen=True)
+class Deciders:
+    """The services the deciding routes run in the analysis pool (and `/extensions/pending`
+    reads through in the app's process)."""
 
-    `version` counts the reloads; the analysis workers reload theirs when a job carries a
-    version they have not seen.
-    """
-
-    def __init__(self, repository: Repository) -> None:
-        self._repository = repository
-        self._lock = threading.Lock()
-        self._index = TemplateIndex(())
-        self.version = 0
-        self.refresh()
-
-    def refresh(self) -> None:
-        index = TemplateIndex(self._repository.list_active_templates())
-        with self._lock:
-            self._index = index
-            self.version += 1
-
-    def index(self) -> TemplateIndex:
-        return self._index
+    gate: GateService
+    extensions: ExtensionService
+    verification: VerificationService
 
 
-@dataclass
-class Services:
-    """Everything the routes need."""
+@dataclass(frozen=True)
+class Components:
+    """Everything one app serves with, built once in its lifespan."""
 
     settings: Settings
     engine: Engine
-    repository: Repository
+    repositories: Repositories
     templates: TemplateCache
-    analyzer: Analyzer
-    policy: GatePolicy
-    metrics: Metrics = field(default_factory=Metrics)
-    reader: Reader | None = None
-    solver_lock: threading.Lock = field(default_factory=threading.Lock)
-    """Held around every Z3 use in this process (template validation): Z3's shared context is
-    not thread-safe, and concurrent template writes in the threadpool failed with a 500."""
+    metrics: Metrics
+    deciders: Deciders
+    audit_trail: AuditTrail
+    curation: CurationService
+    catalog: TemplateCatalog
+    keys: KeyService
+    readiness: ReadinessProbe
+
+    def monitor_service(self, origin: str | None) -> MonitorService:
+        """The app's monitoring service (`monitoring_fanout.monitoring_for` calls this once)."""
+        stores = self.repositories
+        return MonitorService(monitoring=stores.monitoring, contracts=stores.contracts,
+                              audit=stores.audit, metrics=self.metrics, origin=origin)
 
     def close(self) -> None:
         self.engine.dispose()
@@ -126,24 +131,60 @@ def build_analyzer(settings: Settings, cache: AnalysisCache | None = None) -> An
     return EnsembleAnalyzer([SymbolicAnalyzer(reject_from=settings.theta), llm])
 
 
-def build_services(settings: Settings, *, metrics: Metrics | None = None) -> Services:
-    """Connect, migrate, seed and load."""
+def build_deciders(settings: Settings, repositories: Repositories, templates: TemplateCache,
+                   metrics: Metrics) -> Deciders:
+    """The gate, extension and verification services on these repositories.
+
+    Args:
+        settings: the analyzer, policy, budgets and solver timeout.
+        repositories: the store.
+        templates: the active templates.
+        metrics: where decisions and verifications are counted.
+
+    Raises:
+        ValueError: an LLM analyzer is asked for but no model is configured.
+    """
+    analyzer = build_analyzer(settings, cache=repositories.analysis_cache)
+    reader = analyzer if isinstance(analyzer, Reader) else SymbolicAnalyzer(
+        reject_from=settings.theta)
+    gate = GateService(
+        audit=repositories.audit, templates=templates, analyzer=analyzer, reader=reader,
+        policy=GatePolicy(theta=settings.theta), metrics=metrics,
+        max_verify_attempts=settings.max_verify_attempts,
+        solver_timeout_ms=settings.solver_timeout_ms)
+    return Deciders(
+        gate=gate,
+        extensions=ExtensionService(audit=repositories.audit, templates=repositories.templates,
+                                    cache=templates, gate=gate),
+        verification=VerificationService(
+            contracts=repositories.contracts, audit=repositories.audit, metrics=metrics,
+            solver_timeout_ms=settings.solver_timeout_ms),
+    )
+
+
+def build_components(settings: Settings, *, metrics: Metrics | None = None) -> Components:
+    """Connect, migrate, seed, load the templates and build every service."""
     engine = create_engine_for(settings.database_url)
-    repository = Repository(engine)
+    repositories = Repositories.on(engine)
     with startup_lock(engine):  # replicas starting together take turns
         if settings.migrate_on_startup:
             migrate(engine)
         if settings.seed_on_startup:
-            seed_templates(repository, settings.templates_dir)
-    analyzer = build_analyzer(settings, cache=repository)
-    return Services(
+            seed_templates(repositories.templates, settings.templates_dir)
+    counted = metrics or Metrics()
+    templates = TemplateCache(repositories.templates)
+    return Components(
         settings=settings,
         engine=engine,
-        repository=repository,
-        templates=TemplateCache(repository),
-        analyzer=analyzer,
-        policy=GatePolicy(theta=settings.theta),
-        metrics=metrics or Metrics(),
-        reader=analyzer if isinstance(analyzer, Reader) else SymbolicAnalyzer(
-            reject_from=settings.theta),
+        repositories=repositories,
+        templates=templates,
+        metrics=counted,
+        deciders=build_deciders(settings, repositories, templates, counted),
+        audit_trail=AuditTrail(audit=repositories.audit, contracts=repositories.contracts),
+        curation=CurationService(templates=repositories.templates, cache=templates,
+                                 solver_lock=threading.Lock(),
+                                 solver_timeout_ms=settings.solver_timeout_ms),
+        catalog=TemplateCatalog(repositories.templates),
+        keys=KeyService(repositories.access),
+        readiness=ReadinessProbe(repositories.audit, templates),
     )

@@ -11,6 +11,7 @@ other active templates), `Unavailable` (503).
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 from typing import Any
 
@@ -22,7 +23,8 @@ from app.domain.template_validation import (
     class_conflict,
     validate_template,
 )
-from app.services.container import Services
+from app.services.template_cache import TemplateCache
+from app.store.repository import TemplateRepository
 
 
 @dataclass(frozen=True)
@@ -31,14 +33,6 @@ class Curated:
 
     template: HazardTemplate
     warnings: tuple[TemplateIssue, ...] = ()
-
-
-def validate(services: Services, document: object) -> TemplateValidation:
-    """Validate a document against the schema, the vocabulary, Z3 and the stored library."""
-    library = services.repository.list_templates()
-    with services.solver_lock:
-        return validate_template(document, library=library,
-                                 timeout_ms=services.settings.solver_timeout_ms)
 
 
 def _refuse(errors: list[dict[str, Any]], warnings: tuple[TemplateIssue, ...] = ()) -> None:
@@ -61,67 +55,91 @@ def _valid_template(validation: TemplateValidation) -> HazardTemplate:
     return validation.template
 
 
-def create(services: Services, document: object, author: str) -> Curated:
-    """Validate a new template and store it as a draft at version 1.
+class CurationService:
+    """Template writes, validated first, with the gate's template cache kept current."""
 
-    Raises:
-        TemplateInvalid: the document fails validation (nothing is stored).
-        Conflict: a template with this id exists.
-    """
-    validation = validate(services, document)
-    template = _valid_template(validation)
-    stored = services.repository.create_user_template(template, author)
-    return Curated(stored, validation.warnings)
+    def __init__(self, *, templates: TemplateRepository, cache: TemplateCache,
+                 solver_lock: threading.Lock, solver_timeout_ms: int) -> None:
+        """Args:
+            templates: the library.
+            cache: the gate's active templates, refreshed after a change that affects them.
+            solver_lock: held around every Z3 use in this process: Z3's shared context is not
+                thread-safe, and concurrent template writes in the threadpool failed with 500.
+            solver_timeout_ms: Z3's budget per check.
+        """
+        self._templates = templates
+        self._cache = cache
+        self._solver_lock = solver_lock
+        self._timeout_ms = solver_timeout_ms
 
-
-def revise(services: Services, template_id: str, document: object, author: str) -> Curated:
-    """Validate a revision and store it as the template's next version (older ones are kept).
-
-    Raises:
-        NotFound: no such template.
-        TemplateInvalid: the document fails validation or names another id.
-    """
-    services.repository.get_template(template_id)
-    validation = validate(services, document)
-    template = _valid_template(validation)
-    if template.id != template_id:
-        _refuse([{"field": "body.id", "code": "id",
-                  "message": f"the document's id {template.id!r} is not {template_id!r}"}])
-    stored = services.repository.add_template_version(template_id, template, author)
-    if stored.status is TemplateStatus.ACTIVE:
-        services.templates.refresh()
-    return Curated(stored, validation.warnings)
+    def validate(self, document: object) -> TemplateValidation:
+        """Validate a document against the schema, the vocabulary, Z3 and the stored library."""
+        library = self._templates.list_templates()
+        with self._solver_lock:
+            return validate_template(document, library=library,
+                                     timeout_ms=self._timeout_ms)
 
 
-def activate(services: Services, template_id: str) -> HazardTemplate:
-    """Make a template active, so that the gate binds it from now on.
+    def create(self, document: object, author: str) -> Curated:
+        """Validate a new template and store it as a draft at version 1.
 
-    Raises:
-        NotFound: no such template.
-        Conflict: its invariants contradict those of the class's other active templates.
-    """
-    template = services.repository.get_template(template_id)
-    others = [
-        other
-        for other in services.templates.index().for_class(template.hazard_class)
-        if other.id != template_id
-    ]
-    with services.solver_lock:
-        conflict = class_conflict(template, others, services.settings.solver_timeout_ms)
-    if conflict is not None:
-        raise Conflict(conflict.message, field=conflict.field, code=conflict.code)
-    stored = services.repository.set_template_status(template_id, TemplateStatus.ACTIVE)
-    services.templates.refresh()
-    return stored
+        Raises:
+            TemplateInvalid: the document fails validation (nothing is stored).
+            Conflict: a template with this id exists.
+        """
+        validation = self.validate(document)
+        template = _valid_template(validation)
+        stored = self._templates.create_user_template(template, author)
+        return Curated(stored, validation.warnings)
 
 
-def deprecate(services: Services, template_id: str) -> HazardTemplate:
-    """Retire a template: the gate stops binding it; its versions stay readable.
+    def revise(self, template_id: str, document: object, author: str) -> Curated:
+        """Validate a revision and store it as the template's next version (older ones are kept).
 
-    Raises:
-        NotFound: no such template.
-    """
-    stored = services.repository.set_template_status(template_id, TemplateStatus.DEPRECATED)
-    services.templates.refresh()
-    return stored
+        Raises:
+            NotFound: no such template.
+            TemplateInvalid: the document fails validation or names another id.
+        """
+        self._templates.get_template(template_id)
+        validation = self.validate(document)
+        template = _valid_template(validation)
+        if template.id != template_id:
+            _refuse([{"field": "body.id", "code": "id",
+                      "message": f"the document's id {template.id!r} is not {template_id!r}"}])
+        stored = self._templates.add_template_version(template_id, template, author)
+        if stored.status is TemplateStatus.ACTIVE:
+            self._cache.refresh()
+        return Curated(stored, validation.warnings)
 
+
+    def activate(self, template_id: str) -> HazardTemplate:
+        """Make a template active, so that the gate binds it from now on.
+
+        Raises:
+            NotFound: no such template.
+            Conflict: its invariants contradict those of the class's other active templates.
+        """
+        template = self._templates.get_template(template_id)
+        others = [
+            other
+            for other in self._cache.index().for_class(template.hazard_class)
+            if other.id != template_id
+        ]
+        with self._solver_lock:
+            conflict = class_conflict(template, others, self._timeout_ms)
+        if conflict is not None:
+            raise Conflict(conflict.message, field=conflict.field, code=conflict.code)
+        stored = self._templates.set_template_status(template_id, TemplateStatus.ACTIVE)
+        self._cache.refresh()
+        return stored
+
+
+    def deprecate(self, template_id: str) -> HazardTemplate:
+        """Retire a template: the gate stops binding it; its versions stay readable.
+
+        Raises:
+            NotFound: no such template.
+        """
+        stored = self._templates.set_template_status(template_id, TemplateStatus.DEPRECATED)
+        self._cache.refresh()
+        return stored

@@ -1,7 +1,8 @@
 """The gate use case: decide a request, answer its question, re-evaluate it; keep the audit trail.
 
-In: a validated `GateRequest` (or answers to an earlier one). Out: `Decided`: the stored audit
-record plus the in-memory pipeline result the response is built from.
+In: a validated `GateRequest` (or answers to an earlier one). Out: `Decided`, the one value both
+the audit record and the answer are made from: the pipeline's result with the ids the service
+gave the record and its contract (so the answer never mixes a stored record with a result).
 The analyzer reads the command canonicalized (`text_hygiene.for_analysis`: look-alike and
 invisible characters read as a person reads them); the audit trail keeps it as sent.
 Every decision is written (with its contract, if any) before it is returned; a failed write raises
@@ -16,86 +17,69 @@ from __future__ import annotations
 
 import time
 import uuid
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from pydantic import ValidationError
 
 from app.adapters.tracing import stages
 from app.domain.analysis import apply_answers
-from app.domain.contracts import Contract
 from app.domain.errors import InvalidInput, SafeGateError
-from app.domain.gate import Decision
+from app.domain.gate import Decision, GatePolicy
 from app.domain.models import GateRequest
-from app.domain.pipeline import GateResult, run_gate
+from app.domain.pipeline import Analyzer, GateResult, Reader, run_gate
 from app.domain.planning import ReferencePlan, reference_plan
-from app.services.container import Services
+from app.metrics import Metrics
+from app.services.template_cache import TemplateCache
 from app.services.text_hygiene import for_analysis
 from app.store.records import ContractRecord, GateRecord
+from app.store.repository import AuditRepository
 
 
 @dataclass(frozen=True)
 class Decided:
-    record: GateRecord
+    """A decision: the pipeline's result and the ids of its audit record and contract."""
+
+    request: GateRequest
+    """As sent (the audit trail keeps it so); the analyzer read it canonicalized."""
     result: GateResult
+    request_id: str
+    contract_id: str | None
+    """Set exactly when the decision authorizes with a contract."""
+    parent_request_id: str | None = None
     reference: ReferencePlan | None = None
     """Only when asked for: the proved plan, or None with the reason."""
 
-
-def decide(
-    services: Services, request: GateRequest, *, parent_request_id: str | None = None,
-    with_reference_plan: bool = False,
-) -> Decided:
-    """Run Stages 1-4 on a request and record it (and its contract) in the audit trail; with
-    `with_reference_plan`, plan an authorized task and prove the plan (Stage 5)."""
-    readable = for_analysis(request)
-    started_ns = time.time_ns()
-    result = run_gate(
-        readable,
-        templates=services.templates.index(),
-        analyzer=services.analyzer,
-        policy=services.policy,
-        reader=services.reader,
-    )
-    decision = result.decision
-    request_id = uuid.uuid4().hex
-    reference = None
-    if with_reference_plan:  # before the write, so the audit record keeps what is handed out
-        with stages.stage("safegate.stage5.reference_plan",
-                          **{"safegate.gate_request_id": request_id}) as found:
-            reference = _reference(services, readable, result)
-            found["safegate.planned"] = reference.plan is not None
-    contract = None
-    if result.contract is not None and decision.decision is Decision.AUTHORIZE:
-        contract = ContractRecord(
-            id=uuid.uuid4().hex,
-            request_id=request_id,
-            contract=result.contract.model_dump(mode="json"),
-            template_versions=result.contract.template_versions,
-            max_attempts=services.settings.max_verify_attempts,
-        )
-    record, _ = services.repository.save_gate_decision(
-        GateRecord(
-            id=request_id,
-            request=request,
+    def audit_record(self) -> GateRecord:
+        """The audit trail's record of this decision."""
+        result, decision = self.result, self.result.decision
+        return GateRecord(
+            id=self.request_id,
+            request=self.request,
             hazard_report=result.report,
-            decision=decision.decision.value,
-            rule=decision.rule.value,
-            defer_kind=decision.defer_kind.value if decision.defer_kind else None,
+            decision=decision.decision,
+            rule=decision.rule,
+            defer_kind=decision.defer_kind,
             question=decision.question,
             triggers=[h.model_dump(mode="json") for h in decision.trigger_hazards]
             + [u.model_dump(mode="json") for u in decision.trigger_unknowns],
             timings=result.timings_ms,
             analyzer=result.report.analyzer,
             template_versions=result.contract.template_versions if result.contract else {},
-            parent_request_id=parent_request_id,
-            reference_plan=None if reference is None else reference_record(reference),
-        ),
-        contract,
-    )
-    services.metrics.record_decision(record.decision, record.rule, result.timings_ms)
-    stages.record_gate(result, started_ns, request_id)
-    return Decided(record=record, result=result, reference=reference)
+            contract_id=self.contract_id,
+            parent_request_id=self.parent_request_id,
+            reference_plan=None if self.reference is None else reference_record(self.reference),
+        )
+
+    def contract_record(self, max_attempts: int) -> ContractRecord | None:
+        """The contract to store with the decision (None unless it authorizes)."""
+        contract = self.result.contract
+        if contract is None or self.contract_id is None:
+            return None
+        return ContractRecord(
+            id=self.contract_id, request_id=self.request_id,
+            contract=contract.model_dump(mode="json"),
+            template_versions=contract.template_versions, max_attempts=max_attempts)
 
 
 def reference_record(reference: ReferencePlan) -> dict[str, Any]:
@@ -105,30 +89,86 @@ def reference_record(reference: ReferencePlan) -> dict[str, Any]:
             "goal": reference.goal, "reason": reference.reason}
 
 
-def _reference(services: Services, request: GateRequest, result: GateResult) -> ReferencePlan:
-    if result.contract is None or result.decision.decision is not Decision.AUTHORIZE:
-        return ReferencePlan(None, "no reference plan: the task was not authorized")
-    try:
-        return reference_plan(request, result.contract,
-                              timeout_ms=services.settings.solver_timeout_ms,
-                              reader=services.reader)
-    except SafeGateError as error:  # fail closed: no plan rather than an unproved one
-        return ReferencePlan(None, f"no reference plan: {error.detail}")
-    except Exception as error:  # the reader may fail like any Stage 1 reading: the decision stands
-        return ReferencePlan(None, f"no reference plan: planning failed ({type(error).__name__})")
+class GateService:
+    """Stages 1-4 (and on request Stage 5's reference plan) with the audit trail."""
 
+    def __init__(self, *, audit: AuditRepository, templates: TemplateCache, analyzer: Analyzer,
+                 reader: Reader | None, policy: GatePolicy, metrics: Metrics,
+                 max_verify_attempts: int, solver_timeout_ms: int) -> None:
+        """Args:
+            audit: where decisions (and their contracts) are recorded.
+            templates: the active templates.
+            analyzer: Stage 1.
+            reader: reads an authorized command into the task's scope.
+            policy: the Decision Gate's parameters.
+            metrics: where decisions are counted.
+            max_verify_attempts: each new contract's verification budget.
+            solver_timeout_ms: Z3's budget per check of a reference plan.
+        """
+        self._audit = audit
+        self._templates = templates
+        self._analyzer = analyzer
+        self._reader = reader
+        self._policy = policy
+        self._metrics = metrics
+        self._max_attempts = max_verify_attempts
+        self._timeout_ms = solver_timeout_ms
 
-def answer(services: Services, request_id: str, answers: dict[str, Any]) -> Decided:
-    """Fold answers to a clarifying question into the request and decide it again."""
-    if not answers:
-        raise InvalidInput("give at least one answer", field="body")
-    original = services.repository.get_gate_record(request_id)
-    unknowns = original.hazard_report.unknowns if original.hazard_report else ()
-    try:
-        updated = apply_answers(original.request, answers, unknowns)
-    except ValidationError as error:
-        raise _invalid_answer(error, answers) from error
-    return decide(services, updated, parent_request_id=request_id)
+    def decide(self, request: GateRequest, *, parent_request_id: str | None = None,
+               with_reference_plan: bool = False) -> Decided:
+        """Run Stages 1-4 on a request and record it (and its contract) in the audit trail;
+        with `with_reference_plan`, plan an authorized task and prove the plan (Stage 5)."""
+        readable = for_analysis(request)
+        started_ns = time.time_ns()
+        result = run_gate(readable, templates=self._templates.index(), analyzer=self._analyzer,
+                          policy=self._policy, reader=self._reader)
+        authorized = result.contract is not None and (
+            result.decision.decision is Decision.AUTHORIZE)
+        decided = Decided(request=request, result=result, request_id=uuid.uuid4().hex,
+                          contract_id=uuid.uuid4().hex if authorized else None,
+                          parent_request_id=parent_request_id)
+        if with_reference_plan:  # before the write: the audit record keeps what is handed out
+            with stages.stage("safegate.stage5.reference_plan",
+                              **{"safegate.gate_request_id": decided.request_id}) as found:
+                reference = self._reference(readable, result)
+                found["safegate.planned"] = reference.plan is not None
+            decided = replace(decided, reference=reference)
+        self._audit.save_gate_decision(decided.audit_record(),
+                                       decided.contract_record(self._max_attempts))
+        self._metrics.record_decision(result.decision.decision, result.decision.rule,
+                                      result.timings_ms)
+        stages.record_gate(result, started_ns, decided.request_id)
+        return decided
+
+    def _reference(self, request: GateRequest, result: GateResult) -> ReferencePlan:
+        if result.contract is None or result.decision.decision is not Decision.AUTHORIZE:
+            return ReferencePlan(None, "no reference plan: the task was not authorized")
+        try:
+            return reference_plan(request, result.contract, timeout_ms=self._timeout_ms,
+                                  reader=self._reader)
+        except SafeGateError as error:  # fail closed: no plan rather than an unproved one
+            return ReferencePlan(None, f"no reference plan: {error.detail}")
+        except Exception as error:  # the reader may fail like any Stage 1 reading
+            return ReferencePlan(
+                None, f"no reference plan: planning failed ({type(error).__name__})")
+
+    def answer(self, request_id: str, answers: dict[str, Any]) -> Decided:
+        """Fold answers to a clarifying question into the request and decide it again."""
+        if not answers:
+            raise InvalidInput("give at least one answer", field="body")
+        original = self._audit.get_gate_record(request_id)
+        unknowns = original.hazard_report.unknowns if original.hazard_report else ()
+        try:
+            updated = apply_answers(original.request, answers, unknowns)
+        except ValidationError as error:
+            raise _invalid_answer(error, answers) from error
+        return self.decide(updated, parent_request_id=request_id)
+
+    def reevaluate(self, request_id: str) -> Decided:
+        """Decide a stored request again against the current library (after a curator's
+        change)."""
+        original = self._audit.get_gate_record(request_id)
+        return self.decide(original.request, parent_request_id=request_id)
 
 
 def _invalid_answer(error: ValidationError, answers: dict[str, Any]) -> InvalidInput:
@@ -141,25 +181,3 @@ def _invalid_answer(error: ValidationError, answers: dict[str, Any]) -> InvalidI
                 for k in (part, written_as.get(part)) if k in answers), None)
     return InvalidInput(f"the answer does not fit: {first.get('msg', 'invalid')}",
                         field=f"body.{key}" if key is not None else "body")
-
-
-def reevaluate(services: Services, request_id: str) -> Decided:
-    """Decide a stored request again against the current library (after a curator's change)."""
-    original = services.repository.get_gate_record(request_id)
-    return decide(services, original.request, parent_request_id=request_id)
-
-
-def audit_record(services: Services, request_id: str) -> dict[str, Any]:
-    """A stored decision with the decisions that followed it (answers, re-evaluations)."""
-    record = services.repository.get_gate_record(request_id)
-    children = services.repository.list_child_records(request_id)
-    body = record.model_dump(mode="json", by_alias=True)
-    body["request_id"] = record.id
-    body["followed_by"] = [child.id for child in children]
-    return body
-
-
-def contract_of(services: Services, contract_id: str) -> tuple[Contract, ContractRecord]:
-    """A stored contract, parsed back into the domain model."""
-    stored = services.repository.get_contract(contract_id)
-    return Contract.model_validate(stored.contract), stored

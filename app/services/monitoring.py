@@ -43,11 +43,12 @@ from app.adapters.tracing import stages
 from app.domain.errors import Conflict, InvalidInput, SafeGateError
 from app.domain.models import InitialState
 from app.domain.monitor import MonitorSummary, Verdict, decode_message
-from app.services.container import Services
+from app.metrics import Metrics
 from app.services.monitoring_commits import StepCommitter
 from app.services.monitoring_loader import SessionLoader
 from app.services.monitoring_sessions import UNDECODABLE, LiveSession, Subscriber
 from app.store.records import ContractStatus, MonitorSessionRecord
+from app.store.repository import AuditRepository, ContractRepository, MonitorRepository
 
 FLUSH_SECONDS = 0.25
 _log = logging.getLogger("safegate.monitoring")
@@ -57,20 +58,26 @@ class MonitorService:
     """Every monitoring session of one app. The async methods run on the event loop; the
     blocking ones (`open_session`) in worker threads."""
 
-    def __init__(self, services: Services, *, origin: str | None = None) -> None:
+    def __init__(self, *, monitoring: MonitorRepository, contracts: ContractRepository,
+                 audit: AuditRepository, metrics: Metrics, origin: str | None = None) -> None:
         """Args:
-            services: the app's services.
+            monitoring: the sessions and their event logs.
+            contracts: the contracts sessions enforce.
+            audit: the gate records whose scene and robot a session starts from by default.
+            metrics: where open sessions and halts are counted.
             origin: this replica's id when events fan out to other replicas through the
                 database (PostgreSQL); None when this process is the only one (SQLite).
         """
-        self._services = services
-        self._repository = services.repository
+        self._monitoring = monitoring
+        self._contracts = contracts
+        self._audit = audit
+        self._metrics = metrics
         self._live: dict[str, LiveSession] = {}
         self._loading: dict[str, asyncio.Lock] = {}
-        self._loader = SessionLoader(self._repository)
-        self._commits = StepCommitter(self._repository, origin=origin)
+        self._loader = SessionLoader(monitoring=monitoring, contracts=contracts, audit=audit)
+        self._commits = StepCommitter(monitoring, origin=origin)
         self.origin = origin
-        self._open_gauge = services.metrics.monitor_sessions_open
+        self._open_gauge = metrics.monitor_sessions_open
 
     # Opening and loading sessions.
     def open_session(
@@ -89,14 +96,14 @@ class MonitorService:
             NotFound: no such contract. Conflict: the contract is exhausted.
             FormulaError: a condition of the contract cannot be monitored.
         """
-        stored = self._repository.get_contract(contract_id)
+        stored = self._contracts.get_contract(contract_id)
         if stored.status is ContractStatus.EXHAUSTED:
             raise Conflict(f"contract {contract_id!r} is exhausted: its task was rejected")
         self._loader.compiled(contract_id, stored.contract)
         if initial_state is None:
-            request = self._repository.get_gate_record(stored.request_id).request
+            request = self._audit.get_gate_record(stored.request_id).request
             initial_state = InitialState(scene=request.scene, robot=request.robot)
-        return self._repository.create_monitor_session(
+        return self._monitoring.create_monitor_session(
             MonitorSessionRecord(contract_id=contract_id, initial_state=initial_state))
 
     async def session(self, session_id: str) -> LiveSession:
@@ -238,7 +245,7 @@ class MonitorService:
         if verdict.type in ("allow", "violation"):
             if verdict.type == "violation":
                 if verdict.violation is not None:
-                    self._services.metrics.monitor_halts.labels(verdict.violation.kind).inc()
+                    self._metrics.monitor_halts.labels(verdict.violation.kind).inc()
                 live.halt_saved = False
             if not await self._commits.durable(live) and verdict.type == "allow":
                 verdict = Verdict("error", verdict.seq, detail=(

@@ -30,7 +30,7 @@ from typing import Any
 from app.domain.errors import SafeGateError
 from app.services.monitoring_sessions import LiveSession
 from app.store.notifications import notify_payload
-from app.store.repository import MonitorLogWrite, Repository
+from app.store.repository import MonitorLogWrite, MonitorRepository
 
 _log = logging.getLogger("safegate.monitoring")
 
@@ -48,7 +48,7 @@ class _Taken:
 class StepCommitter:
     """The monitor's group commit (one per `MonitorService`)."""
 
-    def __init__(self, repository: Repository, *, origin: str | None = None) -> None:
+    def __init__(self, repository: MonitorRepository, *, origin: str | None = None) -> None:
         """Args:
             repository: where steps are written.
             origin: this replica's id, when each commit also notifies the other replicas of

@@ -1,10 +1,11 @@
 """Monitor events across replicas: what a listener here hears of sessions driven elsewhere.
 
-In: the app's services, in its lifespan (`monitoring_for`). Out: the app's `MonitorService`;
-on PostgreSQL also a `MonitorFanout`, which listens (`app.store.notifications`) for the
-violations and refusals other replicas commit and hands each to this process's listeners of
-that session (its `/events` websockets), then brings the session's copy here up to date. With
-SQLite there is one process: the service publishes to its own listeners and nothing else runs.
+In: the database URL and a factory of the service, in the app's lifespan (`monitoring_for`).
+Out: the app's `MonitorService`; on PostgreSQL also a `MonitorFanout`, which listens
+(`app.store.notifications`) for the violations and refusals other replicas commit and hands
+each to this process's listeners of that session (its `/events` websockets), then brings the
+session's copy here up to date. With SQLite there is one process: the service publishes to its
+own listeners and nothing else runs.
 After the listening connection was lost and is back, each session watched here but driven
 elsewhere is reloaded from the database, and its listeners get a `status` event if it halted
 meanwhile, so a missed notification delays a watcher but never hides a halt from it.
@@ -17,11 +18,10 @@ from __future__ import annotations
 
 import logging
 import uuid
-from collections.abc import AsyncIterator
+from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
 
 from app.domain.errors import SafeGateError
-from app.services.container import Services
 from app.services.monitoring import MonitorService
 from app.store.notifications import MonitorEventListener, RemoteEvent, supports_notify
 
@@ -87,15 +87,19 @@ class MonitorFanout:
 
 @asynccontextmanager
 async def monitoring_for(
-    services: Services,
+    url: str, build: Callable[[str | None], MonitorService],
 ) -> AsyncIterator[tuple[MonitorService, MonitorFanout | None]]:
     """The app's monitoring service for as long as the app runs, and with PostgreSQL the
-    fan-out that carries its events to and from the other replicas on the same database."""
-    url = services.settings.database_url
+    fan-out that carries its events to and from the other replicas on the same database.
+
+    Args:
+        url: the database URL (PostgreSQL fans out; SQLite has one process).
+        build: makes the service, given this replica's origin id (None: no fan-out).
+    """
     if not supports_notify(url):
-        yield MonitorService(services), None
+        yield build(None), None
         return
-    monitoring = MonitorService(services, origin=uuid.uuid4().hex)
+    monitoring = build(uuid.uuid4().hex)
     fanout = MonitorFanout(monitoring, url)
     await fanout.start()
     try:

@@ -30,7 +30,7 @@ from app.domain.monitor import (
 )
 from app.domain.world import WorldState, state_from_request
 from app.services.monitoring_sessions import LiveSession, replayable
-from app.store.repository import Repository
+from app.store.repository import AuditRepository, ContractRepository, MonitorRepository
 
 COMPILED_CACHE = 256
 _log = logging.getLogger("safegate.monitoring")
@@ -39,8 +39,11 @@ _log = logging.getLogger("safegate.monitoring")
 class SessionLoader:
     """Rebuilds sessions from the database; safe to call from several threads."""
 
-    def __init__(self, repository: Repository) -> None:
-        self._repository = repository
+    def __init__(self, *, monitoring: MonitorRepository, contracts: ContractRepository,
+                 audit: AuditRepository) -> None:
+        self._monitoring = monitoring
+        self._contracts = contracts
+        self._audit = audit
         self._compiled: OrderedDict[str, CompiledContract] = OrderedDict()
         self._compiled_lock = threading.Lock()
 
@@ -62,7 +65,7 @@ class SessionLoader:
 
     def _initial_world(self, request_id: str, initial: InitialState) -> WorldState:
         """The session's starting state; the task's user profile still describes its people."""
-        request = self._repository.get_gate_record(request_id).request
+        request = self._audit.get_gate_record(request_id).request
         return state_from_request(request.model_copy(
             update={"scene": initial.scene, "robot": initial.robot}))
 
@@ -76,18 +79,18 @@ class SessionLoader:
         Raises:
             NotFound: no such session. Unavailable: the database could not be read.
         """
-        record = self._repository.get_monitor_session(session_id)
-        stored = self._repository.get_contract(record.contract_id)
+        record = self._monitoring.get_monitor_session(session_id)
+        stored = self._contracts.get_contract(record.contract_id)
         compiled = self.compiled(record.contract_id, stored.contract)
         world = self._initial_world(stored.request_id, record.initial_state)
         if record.halted and record.halt_violation is not None:
             monitor = Monitor(compiled, world, counters=MonitorCounters.from_json(record.counters),
                               violation=MonitorViolation.from_wire(record.halt_violation))
             return LiveSession(session_id, record.contract_id, monitor,
-                               next_event=self._repository.last_monitor_event_seq(session_id) + 1)
+                               next_event=self._monitoring.last_monitor_event_seq(session_id) + 1)
         monitor = Monitor(compiled, world)
         last_event, diverged = 0, 0
-        for event in self._repository.list_monitor_events(session_id):
+        for event in self._monitoring.list_monitor_events(session_id):
             last_event = event.seq
             if event.type != "messages":
                 continue
@@ -107,4 +110,4 @@ class SessionLoader:
 
     def halt_violation(self, session_id: str) -> dict[str, Any] | None:
         """The stored violation that halted a session, if any (blocking)."""
-        return self._repository.get_monitor_session(session_id).halt_violation
+        return self._monitoring.get_monitor_session(session_id).halt_violation

@@ -23,9 +23,9 @@ import yaml
 from app.domain.errors import TemplateInvalid
 from app.domain.models import HazardTemplate, TemplateStatus
 from app.domain.template_validation import class_conflict, validate_template
-from app.store import Repository
 from app.store.records import TemplateChange
 from app.store.repository import template_content_hash
+from app.store.repository.template_imports import TemplateImportQueries
 
 # What an export leaves out: bookkeeping the database assigns (an import makes its own).
 _BOOKKEEPING = frozenset({"version", "source", "author", "created_at"})
@@ -63,7 +63,8 @@ class Export:
     count: int
 
 
-def export_yaml(repository: Repository, *, status: TemplateStatus | None = None) -> Export:
+def export_yaml(repository: TemplateImportQueries, *,
+                status: TemplateStatus | None = None) -> Export:
     """The library (or the templates with one status) as YAML, in id order.
 
     Args:
@@ -190,7 +191,7 @@ def _report(planner: _Planner) -> ImportReport:
                         tuple(planner.warnings), tuple(changes))
 
 
-def plan_import(repository: Repository, text: str, *, timeout_ms: int) -> ImportReport:
+def plan_import(repository: TemplateImportQueries, text: str, *, timeout_ms: int) -> ImportReport:
     """Validate an import file against the stored library and work out what it would change.
 
     Args:
@@ -227,7 +228,8 @@ def _refuse(errors: Sequence[ImportIssue]) -> None:
 
 
 def import_yaml(
-    repository: Repository, text: str, *, author: str, timeout_ms: int, dry_run: bool = False
+    repository: TemplateImportQueries, text: str, *, author: str, timeout_ms: int,
+    dry_run: bool = False,
 ) -> ImportReport:
     """Validate an import file and, when every entry passes, write it in one transaction.
 

@@ -26,14 +26,13 @@ from typing import Any
 from app.adapters.tracing import stages
 from app.domain.contracts import Contract
 from app.domain.errors import AttemptsExhausted, InvalidInput
+from app.domain.gate import Decision
 from app.domain.models import GateRequest, InitialState
 from app.domain.planning import Repair, repair_plan
 from app.domain.verify import Undecided, VerificationResult, Violation, verify_plan
-from app.services.container import Services
+from app.metrics import Metrics
 from app.store.records import ContractRecord, ContractStatus, VerificationAttemptRecord
-
-AUTHORIZE = "authorize"
-REJECT = "reject"
+from app.store.repository import AuditRepository, ContractRepository
 
 
 @dataclass(frozen=True)
@@ -44,7 +43,7 @@ class Verified:
     contract_id: str | None
     attempts: int
     attempts_left: int | None
-    decision: str | None
+    decision: Decision | None
     downgraded: bool
     duration_ms: float
     repair: Repair | None = None
@@ -66,75 +65,100 @@ def _traced_verify(plan: Sequence[object], contract: Contract,
     return result
 
 
-def verify(
-    services: Services,
-    plan: Sequence[object],
-    *,
-    contract_id: str | None = None,
-    contract: Contract | None = None,
-    initial_state: InitialState | None = None,
-) -> Verified:
-    """Verify a plan and keep the attempt budget and the audit trail.
+class VerificationService:
+    """Stage 5 with the contracts' attempt budgets and the audit trail."""
 
-    Args:
-        services: the app's services.
-        plan: the steps as sent.
-        contract_id: a stored contract (mutually exclusive with `contract`).
-        contract: an inline contract, verified without budget or audit trail.
-        initial_state: the starting state; default the stored contract's gate request.
+    def __init__(self, *, contracts: ContractRepository, audit: AuditRepository,
+                 metrics: Metrics, solver_timeout_ms: int) -> None:
+        """Args:
+            contracts: the stored contracts and their budgets.
+            audit: the gate records a contract came from (its start state; downgrades).
+            metrics: where verifications are counted.
+            solver_timeout_ms: Z3's budget per check.
+        """
+        self._contracts = contracts
+        self._audit = audit
+        self._metrics = metrics
+        self._timeout_ms = solver_timeout_ms
 
-    Returns:
-        The verdict with attempts used/left and the standing decision.
+    def verify(
+        self,
+        plan: Sequence[object],
+        *,
+        contract_id: str | None = None,
+        contract: Contract | None = None,
+        initial_state: InitialState | None = None,
+    ) -> Verified:
+        """Verify a plan and keep the attempt budget and the audit trail.
 
-    Raises:
-        AttemptsExhausted: the stored contract has no attempt left.
-        NotFound: no such contract.
-        InvalidInput: neither or both of `contract_id` and `contract`; an inline contract
-            without an initial state; a bad plan step or condition.
-    """
-    if (contract_id is None) == (contract is None):
-        raise InvalidInput("give exactly one of contract_id and contract", field="body")
-    timeout_ms = services.settings.solver_timeout_ms
-    if contract is not None:
-        if initial_state is None:
-            raise InvalidInput("an inline contract needs an initial_state",
-                               field="body.initial_state")
+        Args:
+            plan: the steps as sent.
+            contract_id: a stored contract (mutually exclusive with `contract`).
+            contract: an inline contract, verified without budget or audit trail.
+            initial_state: the starting state; default the stored contract's gate request.
+
+        Returns:
+            The verdict with attempts used/left and the standing decision.
+
+        Raises:
+            AttemptsExhausted: the stored contract has no attempt left.
+            NotFound: no such contract.
+            InvalidInput: neither or both of `contract_id` and `contract`; an inline contract
+                without an initial state; a bad plan step or condition.
+        """
+        if (contract_id is None) == (contract is None):
+            raise InvalidInput("give exactly one of contract_id and contract", field="body")
+        timeout_ms = self._timeout_ms
+        if contract is not None:
+            if initial_state is None:
+                raise InvalidInput("an inline contract needs an initial_state",
+                                   field="body.initial_state")
+            started = time.perf_counter()
+            result = _traced_verify(plan, contract, initial_state, timeout_ms, None)
+            duration_ms = _since(started)
+            self._count(result)
+            verified = Verified(result, None, 0, None, None, False, duration_ms)
+            return _with_repair(verified, plan, contract, initial_state, timeout_ms)
+        assert contract_id is not None
+        stored = self._contracts.get_contract(contract_id)
+        if stored.status is ContractStatus.EXHAUSTED or stored.attempts_left == 0:
+            raise AttemptsExhausted(
+                f"contract {contract_id!r} has used all {stored.max_attempts} verification "
+                "attempts; the task was rejected",
+                attempts_used=stored.attempts_used, max_attempts=stored.max_attempts)
+        start: GateRequest | InitialState = (
+            initial_state if initial_state is not None
+            else self._audit.get_gate_record(stored.request_id).request)
         started = time.perf_counter()
-        result = _traced_verify(plan, contract, initial_state, timeout_ms, None)
+        domain_contract = Contract.model_validate(stored.contract)
+        result = _traced_verify(plan, domain_contract, start, timeout_ms, contract_id)
         duration_ms = _since(started)
-        _count(services, result)
-        verified = Verified(result, None, 0, None, None, False, duration_ms)
-        return _with_repair(verified, plan, contract, initial_state, timeout_ms)
-    assert contract_id is not None
-    repository = services.repository
-    stored = repository.get_contract(contract_id)
-    if stored.status is ContractStatus.EXHAUSTED or stored.attempts_left == 0:
-        raise AttemptsExhausted(
-            f"contract {contract_id!r} has used all {stored.max_attempts} verification "
-            "attempts; the task was rejected",
-            attempts_used=stored.attempts_used, max_attempts=stored.max_attempts)
-    start: GateRequest | InitialState = (
-        initial_state if initial_state is not None
-        else repository.get_gate_record(stored.request_id).request)
-    started = time.perf_counter()
-    domain_contract = Contract.model_validate(stored.contract)
-    result = _traced_verify(plan, domain_contract, start, timeout_ms, contract_id)
-    duration_ms = _since(started)
-    _count(services, result)
-    if not result.ok:
-        stored = repository.use_verification_attempt(contract_id)
-    repository.save_verification_attempt(VerificationAttemptRecord(
-        contract_id=contract_id, plan=list(plan), ok=result.ok,
-        violations=[*map(_violation_json, result.violations),
-                    *map(_violation_json, result.undecided)],
-        duration_ms=duration_ms))
-    downgraded = False
-    if not result.ok and stored.attempts_left == 0:
-        _downgrade(services, stored, result)
-        downgraded = True
-    verified = Verified(result, contract_id, stored.attempts_used, stored.attempts_left,
-                        REJECT if downgraded else AUTHORIZE, downgraded, duration_ms)
-    return _with_repair(verified, plan, domain_contract, start, timeout_ms)
+        self._count(result)
+        if not result.ok:
+            stored = self._contracts.use_verification_attempt(contract_id)
+        self._contracts.save_verification_attempt(VerificationAttemptRecord(
+            contract_id=contract_id, plan=list(plan), ok=result.ok,
+            violations=[*map(_violation_json, result.violations),
+                        *map(_violation_json, result.undecided)],
+            duration_ms=duration_ms))
+        downgraded = False
+        if not result.ok and stored.attempts_left == 0:
+            self._downgrade(stored, result)
+            downgraded = True
+        verified = Verified(result, contract_id, stored.attempts_used, stored.attempts_left,
+                            Decision.REJECT if downgraded else Decision.AUTHORIZE, downgraded,
+                            duration_ms)
+        return _with_repair(verified, plan, domain_contract, start, timeout_ms)
+
+    def _downgrade(self, stored: ContractRecord, result: VerificationResult) -> None:
+        assert stored.id is not None
+        reason = (f"plan verification failed {stored.attempts_used} of {stored.max_attempts} "
+                  f"allowed times (last: {result.reason}); decision downgraded to reject")
+        self._contracts.mark_contract_exhausted(stored.id)
+        self._audit.mark_gate_record_downgraded(stored.request_id, reason)
+
+    def _count(self, result: VerificationResult) -> None:
+        self._metrics.verifications.labels(outcome_of(result)).inc()
 
 
 def _with_repair(verified: Verified, plan: Sequence[object], contract: Contract,
@@ -153,14 +177,6 @@ def _with_repair(verified: Verified, plan: Sequence[object], contract: Contract,
     return replace(verified, repair=repair, repair_ms=_since(started))
 
 
-def _downgrade(services: Services, stored: ContractRecord, result: VerificationResult) -> None:
-    assert stored.id is not None
-    reason = (f"plan verification failed {stored.attempts_used} of {stored.max_attempts} "
-              f"allowed times (last: {result.reason}); decision downgraded to reject")
-    services.repository.mark_contract_exhausted(stored.id)
-    services.repository.mark_gate_record_downgraded(stored.request_id, reason)
-
-
 def _violation_json(item: Violation | Undecided) -> dict[str, Any]:
     body: dict[str, Any] = asdict(item)
     body["kind"] = item.kind.value
@@ -173,10 +189,6 @@ def outcome_of(result: VerificationResult) -> str:
     if result.ok:
         return "ok"
     return "violation" if result.violations else "undecided"
-
-
-def _count(services: Services, result: VerificationResult) -> None:
-    services.metrics.verifications.labels(outcome_of(result)).inc()
 
 
 def _since(started: float) -> float:

@@ -5,11 +5,12 @@ Start-up wiring: `engine = create_engine_for(url)`, `migrate(engine)`,
 """
 
 from app.store.db import DEFAULT_DATABASE_URL, create_engine_for, migrate
-from app.store.repository import Repository, hash_api_key
+from app.store.repository import Repositories, Repository, hash_api_key
 from app.store.seed import load_library, seed_templates
 
 __all__ = [
     "DEFAULT_DATABASE_URL",
+    "Repositories",
     "Repository",
     "create_engine_for",
     "hash_api_key",

@@ -2,7 +2,8 @@
 
 In/out: the gate's audit record, contracts and their verification attempts, monitoring sessions
 and events, API keys, and the result of seeding the template library. Parts the domain already
-models (`GateRequest`, `HazardReport`, `InitialState`, `HazardTemplate`) are typed; parts it does
+models (`GateRequest`, `HazardReport`, `InitialState`, `HazardTemplate`, the gate's `Decision`,
+`Rule` and `DeferKind`) are typed; parts it does
 not model yet (the contract body, triggers, violations, plans) are plain JSON values.
 Fails: pydantic `ValidationError` when a record is built from values of the wrong shape.
 """
@@ -15,6 +16,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from app.domain.gate import Decision, DeferKind, Rule
 from app.domain.models import (
     GateRequest,
     HazardReport,
@@ -41,9 +43,9 @@ class GateRecord(_Record):
     created_at: datetime | None = None
     request: GateRequest
     hazard_report: HazardReport | None = None
-    decision: str = Field(min_length=1, max_length=16)
-    rule: str = Field(min_length=1, max_length=8)
-    defer_kind: str | None = None
+    decision: Decision
+    rule: Rule
+    defer_kind: DeferKind | None = None
     question: str | None = None
     triggers: list[Any] = Field(default_factory=list)
     timings: JsonObject = Field(default_factory=dict)

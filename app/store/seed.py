@@ -20,7 +20,7 @@ from pydantic import ValidationError
 from app.domain.errors import TemplateInvalid
 from app.domain.models import HazardTemplate, TemplateSource
 from app.store.records import SeedReport
-from app.store.repository import Repository
+from app.store.repository.templates import TemplateQueries
 
 
 def _field_path(location: tuple[int | str, ...]) -> str:
@@ -102,7 +102,7 @@ def load_library(directory: Path) -> list[HazardTemplate]:
     return templates
 
 
-def seed_templates(repository: Repository, directory: Path) -> SeedReport:
+def seed_templates(repository: TemplateQueries, directory: Path) -> SeedReport:
     """Load the library from `directory` and upsert it into the database.
 
     Args:

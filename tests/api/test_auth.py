@@ -11,8 +11,7 @@ from fastapi.testclient import TestClient
 from starlette.websockets import WebSocketDisconnect
 from typer.testing import CliRunner
 
-from app.api.auth import CURATOR_ROLES, authorize_websocket
-from app.api.deps import robot_writes
+from app.api.deps import CuratorKey, robot_writes
 from app.cli import cli
 from app.config import Settings
 from app.main import create_app
@@ -36,9 +35,7 @@ def _with_test_websockets(app: FastAPI) -> FastAPI:
         await websocket.close()
 
     @app.websocket("/test/ws-curators")
-    async def curators(websocket: WebSocket) -> None:
-        authorize_websocket(websocket, websocket.app.state.services, CURATOR_ROLES,
-                            open_when_open=False)
+    async def curators(websocket: WebSocket, _: CuratorKey) -> None:
         await websocket.accept()
         await websocket.send_text("hello curator")
         await websocket.close()
@@ -64,7 +61,8 @@ def locked(sqlite_url: str) -> Iterator[TestClient]:
 
 
 def key(client: TestClient, role: ApiKeyRole) -> str:
-    return issue_api_key(client.app.state.services.repository, role, f"test {role.value}")[1]
+    access = client.app.state.components.repositories.access  # type: ignore[attr-defined]
+    return issue_api_key(access, role, f"test {role.value}")[1]
 
 
 def bearer(secret: str) -> dict[str, str]:
@@ -121,7 +119,7 @@ class TestKeysMode:
         assert locked.get("/templates", headers={"X-API-Key": secret}).status_code == 200
 
     def test_revoked_key_is_refused(self, locked: TestClient) -> None:
-        repository: Repository = locked.app.state.services.repository
+        repository = Repository(locked.app.state.components.engine)  # type: ignore[attr-defined]
         record, secret = issue_api_key(repository, ApiKeyRole.ROBOT, "old")
         repository.revoke_api_key(record.id)
         assert locked.get("/templates", headers=bearer(secret)).status_code == 401

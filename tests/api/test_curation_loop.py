@@ -99,7 +99,8 @@ def gaps_client_on(database_url: str, tmp_path: Path) -> Iterator[TestClient]:
 
 
 def bearer(client: TestClient, role: ApiKeyRole) -> dict[str, str]:
-    _, secret = issue_api_key(client.app.state.services.repository, role, f"test {role.value}")
+    access = client.app.state.components.repositories.access  # type: ignore[attr-defined]
+    _, secret = issue_api_key(access, role, f"test {role.value}")
     return {"Authorization": f"Bearer {secret}"}
 
 

@@ -29,7 +29,8 @@ SAFE_SCENE_REQUEST: dict[str, Any] = {
 
 
 def curator(client: TestClient) -> dict[str, str]:
-    _, secret = issue_api_key(client.app.state.services.repository, ApiKeyRole.CURATOR, "cur")
+    access = client.app.state.components.repositories.access  # type: ignore[attr-defined]
+    _, secret = issue_api_key(access, ApiKeyRole.CURATOR, "cur")
     return {"Authorization": f"Bearer {secret}"}
 
 
@@ -55,7 +56,7 @@ class TestTemplateWrites:
     def test_draft_is_stored_but_not_bound(self, client: TestClient) -> None:
         body = client.post("/templates", json=new_template(), headers=curator(client)).json()
         assert (body["status"], body["version"], body["source"]) == ("draft", 1, "user")
-        index = client.app.state.services.templates.index()
+        index = client.app.state.components.templates.index()
         assert "sharp.blade_left_on_edge" not in {t.id for t in index.for_class("sharp_laceration")}
 
     def test_duplicate_hazard_class_is_a_warning_not_a_refusal(self, client: TestClient) -> None:

@@ -124,7 +124,7 @@ class TestInvalidInput:
         assert response.status_code == 422
 
     def test_invalid_input_stores_nothing(self, client: TestClient) -> None:
-        engine = client.app.state.services.engine  # type: ignore[attr-defined]
+        engine = client.app.state.components.engine  # type: ignore[attr-defined]
         from sqlalchemy import text
 
         def rows() -> int:

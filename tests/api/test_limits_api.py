@@ -193,7 +193,7 @@ def tight_client(sqlite_url: str) -> Iterator[TestClient]:
 
 
 def repository_of(client: TestClient) -> Repository:
-    repository: Repository = client.app.state.services.repository  # type: ignore[attr-defined]
+    repository = Repository(client.app.state.components.engine)  # type: ignore[attr-defined]
     return repository
 
 

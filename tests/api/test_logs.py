@@ -13,6 +13,7 @@ from pathlib import Path
 from fastapi.testclient import TestClient
 
 from app.api.logs import JsonLogFormatter, utc_timestamp
+from app.store.repository import Repository
 from tests.api.conftest import LogLines
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -75,7 +76,7 @@ class TestRequestIds:
     def test_websocket_lines_carry_the_request_and_session_ids(
         self, client: TestClient, lines: LogLines
     ) -> None:
-        repository = client.app.state.services.repository  # type: ignore[attr-defined]
+        repository = Repository(client.app.state.components.engine)  # type: ignore[attr-defined]
         contract_id = store_contract(repository)
         session_id = client.post("/monitor", json={"contract_id": contract_id}).json()[
             "session_id"]

@@ -28,11 +28,17 @@ from monitor_kit import (
 from app.config import Settings
 from app.domain.errors import Unavailable
 from app.main import create_app
-from app.store.repository import Repository
+from app.store.repository import MonitorRepository, Repository
 
 
 def repository_of(client: TestClient) -> Repository:
-    repository: Repository = client.app.state.services.repository  # type: ignore[attr-defined]
+    repository = Repository(client.app.state.components.engine)  # type: ignore[attr-defined]
+    return repository
+
+
+def monitor_repository_of(client: TestClient) -> MonitorRepository:
+    """The repository the app's monitoring service writes its steps with."""
+    repository: MonitorRepository = client.app.state.components.repositories.monitoring  # type: ignore[attr-defined]
     return repository
 
 
@@ -189,7 +195,7 @@ def sync(seq: int, holding: str | None = None, room: str = "kitchen") -> dict[st
     return {"type": "sync", "seq": seq, "state": {"scene": REQUEST["scene"], "robot": robot}}
 
 
-def failing_writes(monkeypatch: pytest.MonkeyPatch, repository: Repository) -> None:
+def failing_writes(monkeypatch: pytest.MonkeyPatch, repository: MonitorRepository) -> None:
     def unavailable(*_: Any, **__: Any) -> None:
         raise Unavailable("database error while writing monitor steps: OperationalError",
                           dependency="database")
@@ -221,7 +227,7 @@ class TestDurableSteps:
         with client.websocket_connect(f"/monitor/{session_id}") as socket:
             assert exchange(socket, before(1, PICK_MUG))["type"] == "allow"
             with monkeypatch.context() as patch:
-                failing_writes(patch, repository_of(client))
+                failing_writes(patch, monitor_repository_of(client))
                 refused = exchange(socket, after(1, PICK_MUG))
             assert (refused["type"], refused["seq"], refused["halted"]) == ("error", 1, False)
             assert "could not be stored" in refused["detail"]
@@ -236,7 +242,7 @@ class TestDurableSteps:
         session_id = open_session(client)
         with client.websocket_connect(f"/monitor/{session_id}") as socket, \
                 monkeypatch.context() as patch:
-            failing_writes(patch, repository_of(client))
+            failing_writes(patch, monitor_repository_of(client))
             answer = exchange(socket, before(1, TOGGLE_STOVE))
             assert answer["type"] == "violation"  # halting is the safe side
             assert exchange(socket, before(2, GO_TO_MUG))["type"] == "halted"

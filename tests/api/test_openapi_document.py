@@ -136,3 +136,40 @@ class TestMethodsAndParameters:
         answer = client.get(f"/templates/{template_id}/versions/9223372036854775808")
         assert answer.status_code == 422
         assert answer.json()["errors"][0]["field"] == "path.version"
+
+
+def _resolved(document: dict[str, Any], schema: dict[str, Any]) -> dict[str, Any]:
+    if "$ref" in schema:
+        resolved: dict[str, Any] = document["components"]["schemas"][
+            schema["$ref"].rsplit("/", 1)[1]]
+        return resolved
+    return schema
+
+
+class TestEveryAnswerIsTyped:
+    def test_every_json_answer_has_a_model_with_named_fields(
+        self, document: dict[str, Any]
+    ) -> None:
+        untyped = []
+        for method, path, operation in operations(document):
+            success = next(r for code, r in operation["responses"].items()
+                           if code.startswith("2"))
+            schema = success.get("content", {}).get("application/json", {}).get("schema")
+            if "application/json" in success.get("content", {}) and (
+                    not schema or "properties" not in _resolved(document, schema)):
+                untyped.append(f"{method} {path}")
+        assert untyped == []
+
+    def test_every_operation_declares_its_errors(self, document: dict[str, Any]) -> None:
+        silent = [f"{method} {path}" for method, path, operation in operations(document)
+                  if not any(code.startswith(("4", "5")) for code in operation["responses"])]
+        assert silent == []
+
+    def test_the_audit_record_names_its_decision_and_rule_enums(
+        self, document: dict[str, Any]
+    ) -> None:
+        record = document["components"]["schemas"]["GateRecordResponse"]
+        assert record["properties"]["decision"] == {"$ref": "#/components/schemas/Decision"}
+        assert record["properties"]["rule"] == {"$ref": "#/components/schemas/Rule"}
+        assert {"request_id", "followed_by", "request", "hazard_report"} <= set(
+            record["required"])

@@ -127,7 +127,7 @@ class TestMonitorEnforcesTheScope:
 def _store_pre_scope_contract(client: TestClient) -> str:
     """A contract as stored before scopes existed: no `scope` key, no `envelope` flags."""
     contract_id = authorized(client)
-    repository: Repository = client.app.state.services.repository  # type: ignore[attr-defined]
+    repository = Repository(client.app.state.components.engine)  # type: ignore[attr-defined]
     body = repository.get_contract(contract_id).contract
     body.pop("scope")
     for kind in ("invariants", "guards", "aborts"):

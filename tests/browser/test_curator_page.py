@@ -79,7 +79,8 @@ def _text_of(driver: Any, element_id: str) -> str:
 def _sign_in(driver: Any, base: str, app: Any) -> str:
     from selenium.webdriver.common.by import By
 
-    _, secret = issue_api_key(app.state.services.repository, ApiKeyRole.CURATOR, "page")
+    _, secret = issue_api_key(app.state.components.repositories.access, ApiKeyRole.CURATOR,
+                              "page")
     driver.get(base + "/curator")
     _wait_for(driver, lambda d: d.execute_script("return document.body.dataset.ready"),
               "page wired")

@@ -24,7 +24,7 @@ def metric(client: TestClient, name: str, **labels: str) -> float:
 
 
 def repository_of(client: TestClient) -> Repository:
-    repository: Repository = client.app.state.services.repository  # type: ignore[attr-defined]
+    repository = Repository(client.app.state.components.engine)  # type: ignore[attr-defined]
     return repository
 
 

@@ -32,6 +32,8 @@ from monitor_kit import (
 from replica_kit import BLADE_NEAR_PERSON, knife_contract_in
 from websockets.sync.client import ClientConnection, connect
 
+from app.store.repository import Repository
+
 pytestmark = [pytest.mark.faults, pytest.mark.slow]
 
 KILL_DELAYS = [0.0, 0.05, 0.25, 0.6]
@@ -89,7 +91,8 @@ class TestCrashWindow:
         self, client: TestClient
     ) -> None:
         """What the crash test guards against: step 3 checked against the initial state."""
-        contract_id = store_knife_contract(client.app.state.services.repository)  # type: ignore[attr-defined]
+        engine = client.app.state.components.engine  # type: ignore[attr-defined]
+        contract_id = store_knife_contract(Repository(engine))
         session_id = client.post("/monitor", json={"contract_id": contract_id}).json()[
             "session_id"]
         with client.websocket_connect(f"/monitor/{session_id}") as socket:

@@ -7,11 +7,10 @@ from typing import Literal
 from fastapi import APIRouter
 from fastapi.responses import PlainTextResponse, Response
 
-from app.api.deps import ServicesDep
+from app.api.deps import AuditTrailDep
 from app.api.openapi import problem_responses
 from app.api.schemas import ContractResponse, contract_response
 from app.domain.contracts import planner_constraints
-from app.services import gate
 
 router = APIRouter(tags=["contracts"])
 
@@ -24,10 +23,10 @@ router = APIRouter(tags=["contracts"])
         "description": "The contract: JSON, or plain text with `format=planner`."},
         **problem_responses(404, 503)})
 def get_contract(
-    contract_id: str, services: ServicesDep, format: Literal["json", "planner"] = "json"
+    contract_id: str, audit_trail: AuditTrailDep, format: Literal["json", "planner"] = "json"
 ) -> ContractResponse | Response:
     """The contract as JSON, or (`format=planner`) as plain planning constraints."""
-    contract, stored = gate.contract_of(services, contract_id)
+    contract, stored = audit_trail.contract(contract_id)
     if format == "planner":
         lines = planner_constraints(contract)
         header = "Safety constraints your plan must satisfy:\n"

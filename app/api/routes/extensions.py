@@ -15,11 +15,11 @@ from fastapi import APIRouter, Response
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.api import analysis_jobs
-from app.api.deps import CuratorKey, PoolDep, ReadAccess, ServicesDep
+from app.api.deps import CuratorKey, ExtensionsDep, MetricsDep, PoolDep, ReadAccess
 from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.openapi import problem_responses
+from app.api.read_schemas import PendingExtensionsResponse
 from app.api.schemas import GateResponse
-from app.services import extensions
 from app.services.extensions import PendingClass, WaitingRequest
 
 router = APIRouter(tags=["extensions"])
@@ -72,13 +72,14 @@ def _group(group: PendingClass) -> dict[str, Any]:
     }
 
 
-@router.get("/extensions/pending", summary="List requests waiting for the library",
-            responses=problem_responses(503))
-def pending_extensions(services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
+@router.get("/extensions/pending", response_model=PendingExtensionsResponse,
+            summary="List requests waiting for the library", responses=problem_responses(503))
+def pending_extensions(extensions: ExtensionsDep, _: ReadAccess) -> PendingExtensionsResponse:
     """Requests waiting for a library extension, grouped by hazard class."""
-    groups = extensions.pending_by_class(services)
+    groups = extensions.pending_by_class()
     request_ids = {w.record.id for g in groups for w in g.requests}
-    return {"count": len(request_ids), "classes": [_group(g) for g in groups]}
+    return PendingExtensionsResponse.model_validate(
+        {"count": len(request_ids), "classes": [_group(g) for g in groups]})
 
 
 @router.post("/extensions/reevaluate", response_model=ReevaluateClassResponse,
@@ -86,12 +87,12 @@ def pending_extensions(services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
              responses=problem_responses(
                  403, (409, "No active template covers the class yet."), 503))
 async def reevaluate_class(
-    body: ReevaluateClassRequest, services: ServicesDep, pool: PoolDep, _: CuratorKey
+    body: ReevaluateClassRequest, metrics: MetricsDep, pool: PoolDep, _: CuratorKey
 ) -> Response:
     """Decide again every request waiting on a class that an active template now covers."""
     text, answers = await pool.run(analysis_jobs.reevaluate_class, body.hazard_class)
     for answer in answers:
-        answer.count(services.metrics)
+        answer.count(metrics)
     return Response(text, media_type="application/json")
 
 
@@ -100,10 +101,10 @@ async def reevaluate_class(
              responses=problem_responses(
                  403, 404, (409, "The request is not waiting for a library extension."), 503))
 async def reevaluate_request(
-    request_id: str, services: ServicesDep, pool: PoolDep, _: CuratorKey
+    request_id: str, metrics: MetricsDep, pool: PoolDep, _: CuratorKey
 ) -> Response:
     """Decide a waiting request again with today's library (its chain's latest decision)."""
     answer = await pool.run(analysis_jobs.reevaluate_request, request_id)
-    answer.count(services.metrics)
+    answer.count(metrics)
     return Response(answer.body, media_type="application/json",
                     headers={GATE_REQUEST_ID_HEADER: answer.record_id})

@@ -15,20 +15,20 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Query, Response
 
 from app.api import analysis_jobs
-from app.api.deps import PoolDep, ServicesDep
+from app.api.deps import AuditTrailDep, MetricsDep, PoolDep, SettingsDep
 from app.api.examples import ANSWERS_EXAMPLES, GATE_EXAMPLES
 from app.api.limits import check_gate_request
 from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.openapi import problem_responses
+from app.api.read_schemas import GateRecordResponse
 from app.api.schemas import GateResponse
 from app.domain.models import GateRequest
-from app.services import gate
 
 router = APIRouter(tags=["gate"])
 
 
-def _json(answer: analysis_jobs.GateAnswer, services: ServicesDep) -> Response:
-    answer.count(services.metrics)
+def _json(answer: analysis_jobs.GateAnswer, metrics: MetricsDep) -> Response:
+    answer.count(metrics)
     # The audit record's id also in a header, so the access log line links the HTTP request id
     # to the decision it produced (app/api/observability.py).
     return Response(answer.body, media_type="application/json",
@@ -39,7 +39,8 @@ def _json(answer: analysis_jobs.GateAnswer, services: ServicesDep) -> Response:
              responses=problem_responses(403, 503))
 async def post_gate(
     request: Annotated[GateRequest, Body(openapi_examples=GATE_EXAMPLES)],
-    services: ServicesDep,
+    settings: SettingsDep,
+    metrics: MetricsDep,
     pool: PoolDep,
     reference_plan: bool = Query(
         default=False,
@@ -52,15 +53,18 @@ async def post_gate(
 
     503 with Retry-After when the analysis workers and their queue are full.
     """
-    check_gate_request(request, services.settings)
-    return _json(await pool.run(analysis_jobs.decide, request, reference_plan), services)
+    check_gate_request(request, settings)
+    return _json(await pool.run(analysis_jobs.decide, request, reference_plan), metrics)
 
 
-@router.get("/gate/{request_id}", summary="Read a decision's audit record",
-            responses=problem_responses(404, 503))
-def get_gate(request_id: str, services: ServicesDep) -> dict[str, Any]:
+@router.get("/gate/{request_id}", response_model=GateRecordResponse,
+            summary="Read a decision's audit record", responses=problem_responses(404, 503))
+def get_gate(request_id: str, audit_trail: AuditTrailDep) -> GateRecordResponse:
     """The audit record of one decided request, with the decisions that followed it."""
-    return gate.audit_record(services, request_id)
+    entry = audit_trail.entry(request_id)
+    record = entry.record
+    return GateRecordResponse.model_validate({
+        **dict(record), "request_id": record.id, "followed_by": list(entry.followed_by)})
 
 
 @router.post("/gate/{request_id}/answers", response_model=GateResponse,
@@ -68,7 +72,7 @@ def get_gate(request_id: str, services: ServicesDep) -> dict[str, Any]:
              responses=problem_responses(403, 404, 503))
 async def post_answers(
     request_id: str,
-    services: ServicesDep,
+    metrics: MetricsDep,
     pool: PoolDep,
     answers: dict[str, Any] = Body(  # noqa: B008 - FastAPI's way to declare a body
         ..., openapi_examples=ANSWERS_EXAMPLES,
@@ -78,4 +82,4 @@ async def post_answers(
     ),
 ) -> Response:
     """Answer the clarifying question; the pipeline runs again and links to the original."""
-    return _json(await pool.run(analysis_jobs.answer, request_id, answers), services)
+    return _json(await pool.run(analysis_jobs.answer, request_id, answers), metrics)

@@ -16,15 +16,13 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
-from typing import Annotated, Any, Literal
+from typing import Any, Literal
 
-from fastapi import APIRouter, Depends, WebSocket, WebSocketDisconnect, status
+from fastapi import APIRouter, WebSocket, WebSocketDisconnect, status
 from pydantic import BaseModel, ConfigDict, Field
-from starlette.requests import HTTPConnection
 
 from app.adapters.tracing import Tracing, stages
-from app.api.auth import ANY_ROLE, ROBOT_ROLES, authorize_websocket
-from app.api.deps import ReadAccess, RobotAccess, ServicesDep
+from app.api.deps import MonitoringDep, ReadAccess, RobotAccess, SettingsDep
 from app.api.examples import MONITOR_OPEN_EXAMPLE
 from app.api.limits import check_initial_state
 from app.api.openapi import problem_responses
@@ -39,18 +37,6 @@ _log = logging.getLogger("safegate.websocket")
 CLOSE_NOT_FOUND = 4404
 CLOSE_UNAVAILABLE = 1011
 CLOSE_TOO_SLOW = 1013
-
-
-async def monitoring_of(connection: HTTPConnection) -> MonitorService:
-    """The app's monitoring service, created on first use (on the event loop, so once)."""
-    state = connection.app.state
-    service: MonitorService | None = getattr(state, "monitoring", None)
-    if service is None:
-        service = state.monitoring = MonitorService(state.services)
-    return service
-
-
-MonitoringDep = Annotated[MonitorService, Depends(monitoring_of)]
 
 
 class MonitorOpenRequest(BaseModel):
@@ -116,10 +102,10 @@ class MonitorSummaryResponse(BaseModel):
              status_code=status.HTTP_201_CREATED, summary="Open a monitoring session",
              responses=problem_responses(
                  403, 404, (409, "The contract is exhausted: its task was rejected."), 503))
-def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep, services: ServicesDep,
+def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep, settings: SettingsDep,
                  _: RobotAccess) -> MonitorOpenResponse:
     """Open a session; the initial state defaults to the gate request's scene and robot."""
-    check_initial_state(body.initial_state, services.settings)
+    check_initial_state(body.initial_state, settings)
     record = monitoring.open_session(body.contract_id, body.initial_state)
     assert record.id is not None
     return MonitorOpenResponse(session_id=record.id, contract_id=record.contract_id,
@@ -152,10 +138,9 @@ async def _refuse_connection(websocket: WebSocket, session_id: str, channel: str
 
 
 @router.websocket("/monitor/{session_id}")
-async def monitor_socket(websocket: WebSocket, session_id: str,
-                         monitoring: MonitoringDep) -> None:
+async def monitor_socket(websocket: WebSocket, session_id: str, monitoring: MonitoringDep,
+                         _: RobotAccess) -> None:
     """The runtime's channel: one answer per message, in order (robot or admin key)."""
-    authorize_websocket(websocket, websocket.app.state.services, ROBOT_ROLES)
     await websocket.accept()
     try:
         live = await monitoring.attach(session_id)
@@ -216,10 +201,9 @@ async def _forward_events(websocket: WebSocket, live: LiveSession,
 
 
 @router.websocket("/monitor/{session_id}/events")
-async def events_socket(websocket: WebSocket, session_id: str,
-                        monitoring: MonitoringDep) -> None:
+async def events_socket(websocket: WebSocket, session_id: str, monitoring: MonitoringDep,
+                        _: ReadAccess) -> None:
     """A listener's channel: the session's status, then violations and refusals (any key)."""
-    authorize_websocket(websocket, websocket.app.state.services, ANY_ROLE)
     await websocket.accept()
     try:
         live = await monitoring.session(session_id)

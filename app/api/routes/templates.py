@@ -13,10 +13,15 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Path, Query, status
 from pydantic import BaseModel, Field
 
-from app.api.deps import CuratorKey, ReadAccess, ServicesDep
+from app.api.deps import CatalogDep, CurationDep, CuratorKey, ReadAccess
 from app.api.openapi import problem_responses
+from app.api.read_schemas import (
+    CuratedTemplateResponse,
+    TemplateHistoryResponse,
+    TemplateResponse,
+    TemplateValidationResponse,
+)
 from app.domain.models import Category, HazardTemplate, TemplateStatus
-from app.services import curation, template_listing
 from app.services.curation import Curated
 from app.services.template_listing import SortOrder, TemplateSortKey
 from app.store.records import ApiKeyRecord
@@ -47,14 +52,14 @@ def _author(key: ApiKeyRecord) -> str:
     return key.name or f"key {key.id}"
 
 
-def _curated(curated: Curated) -> dict[str, Any]:
-    body: dict[str, Any] = curated.template.model_dump(mode="json")
-    body["warnings"] = [warning.as_dict() for warning in curated.warnings]
-    return body
+def _curated(curated: Curated) -> CuratedTemplateResponse:
+    return CuratedTemplateResponse.model_validate({
+        **curated.template.model_dump(mode="json"),
+        "warnings": [warning.as_dict() for warning in curated.warnings]})
 
 
-def _template(template: HazardTemplate) -> dict[str, Any]:
-    return template.model_dump(mode="json")
+def _template(template: HazardTemplate) -> TemplateResponse:
+    return TemplateResponse.model_validate(template.model_dump(mode="json"))
 
 
 class TemplateListResponse(BaseModel):
@@ -64,7 +69,7 @@ class TemplateListResponse(BaseModel):
     total: int = Field(description="How many templates match, on every page together.")
     offset: int = Field(description="How many matches were skipped before this page.")
     limit: int | None = Field(description="The page size asked for; null when not paging.")
-    templates: list[dict[str, Any]] = Field(
+    templates: list[TemplateResponse] = Field(
         description="Templates at their current version, as `GET /templates/{template_id}` "
                     "answers them without `versions`.")
 
@@ -72,7 +77,7 @@ class TemplateListResponse(BaseModel):
 @router.get("/templates", summary="List, search, sort and page templates",
             response_model=TemplateListResponse, responses=problem_responses(503))
 def list_templates(
-    services: ServicesDep,
+    catalog: CatalogDep,
     _: ReadAccess,
     category: Category | None = None,
     hazard_class: str | None = None,
@@ -90,80 +95,84 @@ def list_templates(
     limit: Annotated[int | None, Query(
         ge=1, le=MAX_PAGE, description="Page size; without it, every match from `offset` "
                                        "on.")] = None,
-) -> dict[str, Any]:
+) -> TemplateListResponse:
     """Templates at their current version, filtered by category, class, status and search words,
     sorted by one column, optionally one page at a time (`total` counts every match)."""
-    templates = services.repository.list_templates(
-        category=category, hazard_class=hazard_class, status=status
-    )
-    found = template_listing.page(templates, text=q, sort=sort, order=order, offset=offset,
-                                  limit=limit)
-    return {"count": len(found.templates), "total": found.total, "offset": offset,
-            "limit": limit, "templates": [_template(t) for t in found.templates]}
+    found = catalog.page(category=category, hazard_class=hazard_class, status=status, text=q,
+                         sort=sort, order=order, offset=offset, limit=limit)
+    return TemplateListResponse(count=len(found.templates), total=found.total, offset=offset,
+                                limit=limit, templates=[_template(t) for t in found.templates])
 
 
-@router.post("/templates/validate", summary="Validate a template without storing it",
-             responses=problem_responses(503))
+@router.post("/templates/validate", response_model=TemplateValidationResponse,
+             response_model_exclude_unset=True,
+             summary="Validate a template without storing it", responses=problem_responses(503))
 def validate_template(
-    services: ServicesDep, _: ReadAccess, document: Any = _DOCUMENT
-) -> dict[str, Any]:
+    curation: CurationDep, _: ReadAccess, document: Any = _DOCUMENT
+) -> TemplateValidationResponse:
     """Validate a template without storing it: `valid`, `errors` and `warnings`."""
-    return curation.validate(services, document).as_dict()
+    return TemplateValidationResponse.model_validate(curation.validate(document).as_dict())
 
 
 @router.post("/templates", status_code=status.HTTP_201_CREATED,
+             response_model=CuratedTemplateResponse, response_model_exclude_unset=True,
              summary="Create a template (a draft)",
              responses=problem_responses(403, (409, "A template with this id exists."), 503))
 def create_template(
-    services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
-) -> dict[str, Any]:
+    curation: CurationDep, key: CuratorKey, document: Any = _DOCUMENT
+) -> CuratedTemplateResponse:
     """Validate a new template and store it as a draft (activate it to put it to use)."""
-    return _curated(curation.create(services, document, _author(key)))
+    return _curated(curation.create(document, _author(key)))
 
 
-@router.get("/templates/{template_id}", summary="Read a template with its versions",
-            responses=problem_responses(404, 503))
-def get_template(template_id: str, services: ServicesDep, _: ReadAccess) -> dict[str, Any]:
+@router.get("/templates/{template_id}", response_model=TemplateHistoryResponse,
+            summary="Read a template with its versions", responses=problem_responses(404, 503))
+def get_template(template_id: str, catalog: CatalogDep,
+                 _: ReadAccess) -> TemplateHistoryResponse:
     """One template at its current version, with every version kept."""
-    history = services.repository.get_template_history(template_id)
-    body = _template(history.current)
-    body["versions"] = [v.model_dump(mode="json") for v in history.versions]
-    return body
+    history = catalog.history(template_id)
+    return TemplateHistoryResponse.model_validate({
+        **history.current.model_dump(mode="json"),
+        "versions": [v.model_dump(mode="json") for v in history.versions]})
 
 
-@router.get("/templates/{template_id}/versions/{version}",
+@router.get("/templates/{template_id}/versions/{version}", response_model=TemplateResponse,
             summary="Read one version of a template", responses=problem_responses(404, 503))
 def get_template_version(
-    template_id: str, version: Annotated[int, Path(ge=1, le=MAX_VERSION)], services: ServicesDep,
+    template_id: str, version: Annotated[int, Path(ge=1, le=MAX_VERSION)], catalog: CatalogDep,
     _: ReadAccess,
-) -> dict[str, Any]:
+) -> TemplateResponse:
     """One template as it was at one version (contracts name the versions they used)."""
-    return _template(services.repository.get_template(template_id, version))
+    return _template(catalog.version(template_id, version))
 
 
-@router.put("/templates/{template_id}", summary="Revise a template (a new version)",
+@router.put("/templates/{template_id}", response_model=CuratedTemplateResponse,
+            response_model_exclude_unset=True, summary="Revise a template (a new version)",
             responses=problem_responses(
                 403, 404, (409, "Revised concurrently, or its id does not match."), 503))
 def revise_template(
-    template_id: str, services: ServicesDep, key: CuratorKey, document: Any = _DOCUMENT
-) -> dict[str, Any]:
+    template_id: str, curation: CurationDep, key: CuratorKey, document: Any = _DOCUMENT
+) -> CuratedTemplateResponse:
     """Store a revision as the next version; earlier versions stay readable."""
-    return _curated(curation.revise(services, template_id, document, _author(key)))
+    return _curated(curation.revise(template_id, document, _author(key)))
 
 
-@router.post("/templates/{template_id}/activate", summary="Activate a template",
+@router.post("/templates/{template_id}/activate", response_model=TemplateResponse,
+             summary="Activate a template",
              responses=problem_responses(
                  403, 404, (409, "Its status or validity does not allow it."), 503))
-def activate_template(template_id: str, services: ServicesDep, _: CuratorKey) -> dict[str, Any]:
+def activate_template(template_id: str, curation: CurationDep,
+                      _: CuratorKey) -> TemplateResponse:
     """Put a template to use: the gate binds it from the next request on."""
-    return _template(curation.activate(services, template_id))
+    return _template(curation.activate(template_id))
 
 
-@router.post("/templates/{template_id}/deprecate", summary="Deprecate a template",
+@router.post("/templates/{template_id}/deprecate", response_model=TemplateResponse,
+             summary="Deprecate a template",
              responses=problem_responses(
                  403, 404, (409, "Its status does not allow it."), 503))
 def deprecate_template(
-    template_id: str, services: ServicesDep, _: CuratorKey
-) -> dict[str, Any]:
+    template_id: str, curation: CurationDep, _: CuratorKey
+) -> TemplateResponse:
     """Retire a template: the gate stops binding it; its versions stay readable."""
-    return _template(curation.deprecate(services, template_id))
+    return _template(curation.deprecate(template_id))

@@ -2,18 +2,22 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from fastapi import APIRouter
 
+from app.api.openapi import problem_responses
+from app.api.read_schemas import VocabularyResponse
 from app.domain.formula.vocabulary import VOCABULARY
 from app.domain.world import describe_actions
 
 router = APIRouter(tags=["vocabulary"])
 
 
-@router.get("/vocabulary", summary="List the condition language and the action model")
-def get_vocabulary() -> dict[str, Any]:
+@router.get("/vocabulary", response_model=VocabularyResponse,
+            response_model_exclude_unset=True,
+            summary="List the condition language and the action model",
+            responses=problem_responses(
+                (500, "Failed unexpectedly (never expected: the vocabulary is built in).")))
+def get_vocabulary() -> VocabularyResponse:
     """Every predicate and function a condition may use, and every action a plan may use."""
     symbols = [
         {
@@ -25,4 +29,4 @@ def get_vocabulary() -> dict[str, Any]:
         }
         for s in VOCABULARY.values()
     ]
-    return {"symbols": symbols, "actions": describe_actions()}
+    return VocabularyResponse.model_validate({"symbols": symbols, "actions": describe_actions()})

@@ -1,8 +1,7 @@
-"""Queries on API keys and on the LLM analysis cache.
+"""Queries on API keys.
 
-In: key hashes (never secrets: `hash_api_key` turns a secret into what is stored), roles, and
-JSON analysis results keyed by the caller's hash of the analyzer's inputs, model and prompt
-version. Out: `ApiKeyRecord` values and cached JSON. A revoked key is never returned as active.
+In: key hashes (never secrets: `hash_api_key` turns a secret into what is stored) and roles.
+Out: `ApiKeyRecord` values. A revoked key is never returned as active.
 Fails: `Conflict` for a key hash already stored, `NotFound` for an unknown key id,
 `Unavailable` for database errors.
 """
@@ -11,15 +10,14 @@ from __future__ import annotations
 
 import hashlib
 from collections.abc import Collection
-from typing import Any
 
 from sqlalchemy import select
 from sqlalchemy.exc import IntegrityError
 
-from app.domain.errors import Conflict, NotFound, Unavailable
+from app.domain.errors import Conflict, NotFound
 from app.store.records import ApiKeyRecord, ApiKeyRole
 from app.store.repository._base import RepositoryBase
-from app.store.tables import ApiKeyRow, LlmCacheRow, new_id, utc_now
+from app.store.tables import ApiKeyRow, new_id, utc_now
 
 
 def hash_api_key(secret: str) -> str:
@@ -48,7 +46,7 @@ def _to_key(row: ApiKeyRow) -> ApiKeyRecord:
 
 
 class AccessQueries(RepositoryBase):
-    """API keys and the LLM cache."""
+    """API keys: issued, looked up by hash, listed, revoked."""
 
     def create_api_key(self, *, key_hash: str, role: ApiKeyRole, name: str) -> ApiKeyRecord:
         """Store a new API key by its hash.
@@ -112,42 +110,3 @@ class AccessQueries(RepositoryBase):
                 .where(ApiKeyRow.revoked.is_(True))
             )
             return set(rows.all())
-
-    def get_cached_analysis(
-        self, cache_key: str, model: str, prompt_version: str
-    ) -> dict[str, Any] | None:
-        """A cached analysis result, or None when there is none for this key, model and prompt."""
-        with self._transaction("reading the LLM cache") as session:
-            row = session.get(LlmCacheRow, (cache_key, model, prompt_version))
-            return dict(row.result) if row is not None else None
-
-    def put_cached_analysis(
-        self, cache_key: str, model: str, prompt_version: str, result: dict[str, Any]
-    ) -> None:
-        """Store (or replace) a cached analysis result."""
-        identity = (cache_key, model, prompt_version)
-        try:
-            with self._transaction("writing the LLM cache") as session:
-                row = session.get(LlmCacheRow, identity)
-                if row is None:
-                    session.add(
-                        LlmCacheRow(
-                            cache_key=cache_key,
-                            model=model,
-                            prompt_version=prompt_version,
-                            result=dict(result),
-                            created_at=utc_now(),
-                        )
-                    )
-                else:
-                    row.result = dict(result)
-                    row.created_at = utc_now()
-        except Unavailable as error:
-            if not isinstance(error.__cause__, IntegrityError):
-                raise
-            # A concurrent writer stored the same key first; overwrite with ours.
-            with self._transaction("writing the LLM cache") as session:
-                existing = session.get(LlmCacheRow, identity)
-                if existing is not None:
-                    existing.result = dict(result)
-                    existing.created_at = utc_now()

@@ -17,13 +17,12 @@ from sqlalchemy.exc import IntegrityError
 from sqlalchemy.orm import Session, aliased
 
 from app.domain.errors import Conflict, NotFound
+from app.domain.gate import Decision, DeferKind, Rule
 from app.domain.models import GateRequest, HazardReport
 from app.store.records import ContractRecord, GateRecord
 from app.store.repository._base import RepositoryBase
 from app.store.tables import ContractRow, GateRecordRow, new_id, utc_now
 
-EXTEND_LIBRARY = "extend_library"
-DEFER = "defer"
 _GATE_TABLE: Table = GateRecordRow.__table__  # type: ignore[assignment]
 _CONTRACT_TABLE: Table = ContractRow.__table__  # type: ignore[assignment]
 # Built once: a statement object memoises its compiled-cache key, a fresh one per call would not.
@@ -41,9 +40,9 @@ def _to_record(row: GateRecordRow) -> GateRecord:
             if row.hazard_report is not None
             else None
         ),
-        decision=row.decision,
-        rule=row.rule,
-        defer_kind=row.defer_kind,
+        decision=Decision(row.decision),
+        rule=Rule(row.rule),
+        defer_kind=None if row.defer_kind is None else DeferKind(row.defer_kind),
         question=row.question,
         triggers=list(row.triggers),
         timings=dict(row.timings),
@@ -65,9 +64,10 @@ def _gate_values(record: GateRecord) -> dict[str, Any]:
         # Models go to the JSON encoder as they are (see `db._json_text`): no dict in between.
         "request": record.request,
         "hazard_report": record.hazard_report,
-        "decision": record.decision,
-        "rule": record.rule,
-        "defer_kind": record.defer_kind,
+        # The columns hold the enums' values (a string column, readable by any SQL client).
+        "decision": record.decision.value,
+        "rule": record.rule.value,
+        "defer_kind": None if record.defer_kind is None else record.defer_kind.value,
         "question": record.question,
         "triggers": list(record.triggers),
         "timings": dict(record.timings),
@@ -223,8 +223,8 @@ class AuditQueries(RepositoryBase):
         child = aliased(GateRecordRow)
         query = (
             select(GateRecordRow)
-            .where(GateRecordRow.decision == DEFER)
-            .where(GateRecordRow.defer_kind == EXTEND_LIBRARY)
+            .where(GateRecordRow.decision == Decision.DEFER.value)
+            .where(GateRecordRow.defer_kind == DeferKind.EXTEND_LIBRARY.value)
             .where(~exists().where(child.parent_request_id == GateRecordRow.id))
             .order_by(GateRecordRow.created_at, GateRecordRow.id)
             .limit(limit)

@@ -81,7 +81,7 @@ class TestCuratorClassReachesTheModel:
         assert f"- {NEW_CLASS}:" not in _system_prompt(llm_server)
         assert (before["rule"], before["defer_kind"]) == ("R2", "extend_library")
 
-        _, secret = issue_api_key(llm_app.app.state.services.repository,
+        _, secret = issue_api_key(llm_app.app.state.components.repositories.access,
                                   ApiKeyRole.CURATOR, "curator")
         curator = {"Authorization": f"Bearer {secret}"}
         assert llm_app.post("/templates", json=CURATED, headers=curator).status_code == 201

@@ -5,7 +5,17 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, RootModel
+from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, RootModel
+
+
+class ActionArgumentOut(BaseModel):
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    description: str | None = None
+    name: str
+    required: bool
+    type: str
 
 
 class ContractConditionOut(BaseModel):
@@ -42,6 +52,33 @@ class CreateKeyRequest(BaseModel):
     """
 
 
+class CreatedKeyResponse(BaseModel):
+    """
+    A new key, with its secret: shown this once.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    created_at: AwareDatetime
+    id: str
+    key: str
+    name: str
+    revoked: bool
+    role: Literal['robot', 'curator', 'admin']
+
+
+class HealthResponse(BaseModel):
+    """
+    The process is up.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    status: str
+
+
 class InlineCondition(BaseModel):
     """
     A condition of an inline contract: its formula over entity constants (`#mug_1`).
@@ -67,6 +104,36 @@ class InlineContract(BaseModel):
     aborts: Annotated[list[InlineCondition] | None, Field(max_length=500)] = None
     guards: Annotated[list[InlineCondition] | None, Field(max_length=500)] = None
     invariants: Annotated[list[InlineCondition] | None, Field(max_length=500)] = None
+
+
+class IssueOut(BaseModel):
+    """
+    A problem found in a template document (`line` and `column` only within a formula).
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    code: str
+    column: int | None = None
+    field: str
+    line: int | None = None
+    message: str
+
+
+class KeyResponse(BaseModel):
+    """
+    An API key as stored (never its secret).
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    created_at: AwareDatetime
+    id: str
+    name: str
+    revoked: bool
+    role: Literal['robot', 'curator', 'admin']
 
 
 class Connection(RootModel[tuple[str, str]]):
@@ -211,6 +278,14 @@ class Position(BaseModel):
     z: float | None = None
 
 
+class PreconditionOut(BaseModel):
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    description: str
+    formula: str
+
+
 class ProblemField(BaseModel):
     """
     One thing wrong with the input: where it is, and why.
@@ -230,6 +305,21 @@ class ProblemField(BaseModel):
     type: str | None = None
     """
     A machine-readable kind of problem (`missing`, `literal_error`...).
+    """
+
+
+class ReadinessResponse(BaseModel):
+    """
+    The database answers and the library is loaded.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    status: str
+    templates: int
+    """
+    Active templates loaded.
     """
 
 
@@ -365,34 +455,29 @@ class SortOrder(RootModel[Literal['asc', 'desc']]):
     root: Literal['asc', 'desc']
 
 
-class TemplateListResponse(BaseModel):
+class SymbolOut(BaseModel):
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    args: list[str]
+    can_be_unknown: bool
+    meaning: str
+    name: str
+    result: str
+
+
+class TemplateCondition(BaseModel):
     """
-    One page of the library (every match when no `limit` is given).
+    One prevention condition. Guards name the action (canonical name) they guard.
     """
 
     model_config = ConfigDict(
         extra='allow',
     )
-    count: int
-    """
-    How many templates this answer holds.
-    """
-    limit: int | None
-    """
-    The page size asked for; null when not paging.
-    """
-    offset: int
-    """
-    How many matches were skipped before this page.
-    """
-    templates: list[dict[str, Any]]
-    """
-    Templates at their current version, as `GET /templates/{template_id}` answers them without `versions`.
-    """
-    total: int
-    """
-    How many templates match, on every page together.
-    """
+    action: str | None = None
+    description: Annotated[str, Field(min_length=1)]
+    formula: Annotated[str, Field(max_length=4000, min_length=1)]
+    id: Annotated[str, Field(pattern='^[a-z][a-z0-9_]*$')]
 
 
 class TemplateSortKey(
@@ -404,8 +489,33 @@ class TemplateSortKey(
     """
 
 
-class TemplateStatus(RootModel[Literal['draft', 'active', 'deprecated']]):
-    root: Literal['draft', 'active', 'deprecated']
+class TemplateValidationResponse(BaseModel):
+    """
+    The verdict on a template document; nothing is stored.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    errors: list[IssueOut]
+    valid: bool
+    warnings: list[IssueOut]
+
+
+class UnknownFact(BaseModel):
+    """
+    Something the gate does not know that may matter; critical ones block authorization.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    attribute: Annotated[str, Field(min_length=1)]
+    critical: bool
+    description: Annotated[str, Field(min_length=1)]
+    entity: str | None = None
+    question: str | None = None
+    why: Annotated[str, Field(min_length=1)]
 
 
 class UnknownOut(BaseModel):
@@ -486,6 +596,44 @@ class VerifyResponse(BaseModel):
     violations: list[PlanViolation]
 
 
+class WaitingHazardOut(BaseModel):
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    entities: dict[str, str]
+    hazard_class: str
+    mechanism: str
+    severity: Literal['critical', 'high', 'moderate', 'low', 'negligible']
+
+
+class WaitingRequestOut(BaseModel):
+    """
+    A request whose latest decision waits for the library to cover a class.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    also_waiting_for: list[str]
+    command: str
+    created_at: str | None
+    hazards: list[WaitingHazardOut]
+    parent_request_id: str | None
+    request_id: str
+
+
+class ActionOut(BaseModel):
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    aliases: list[str]
+    arguments: list[ActionArgumentOut]
+    effects: list[str]
+    name: str
+    preconditions: list[PreconditionOut]
+    summary: str
+
+
 class HazardOut(BaseModel):
     """
     A hazard Stage 1 found, with the template that bound it (or why none did).
@@ -525,6 +673,56 @@ class HazardOut(BaseModel):
     unbound_reason: str | None = None
 
 
+class HazardProposal(BaseModel):
+    """
+    One cell entry of the matrix: a hazard the analyzer believes the task carries.
+
+    `entities` maps template variable names (without `$`) to scene ids, e.g.
+    {"obj": "mug_1", "person": "person_1"}; binding uses them to instantiate a template.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    category: Literal['physical', 'psychological', 'operational', 'consequential']
+    confidence: Literal['certain', 'uncertain']
+    entities: dict[str, str] | None = None
+    hazard_class: Annotated[str, Field(min_length=1)]
+    level: Literal['task', 'deployment', 'user']
+    """
+    Information level: task (command only), deployment (+ scene), user (+ user, robot).
+    """
+    mechanism: Annotated[str, Field(min_length=1)]
+    preventability: Literal['preventable', 'unpreventable', 'unknown']
+    severity: Literal['critical', 'high', 'moderate', 'low', 'negligible']
+    source: str | None = 'symbolic'
+    template_id: str | None = None
+
+
+class HazardReport(BaseModel):
+    """
+    The filled Hazard Analysis Matrix plus the unknowns found on the way.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    analyzer: str | None = 'symbolic'
+    proposals: Annotated[list[HazardProposal] | None, Field(validate_default=True)] = []
+    unknowns: Annotated[list[UnknownFact] | None, Field(validate_default=True)] = []
+
+
+class KeyListResponse(BaseModel):
+    """
+    Every key, revoked ones included.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    keys: list[KeyResponse]
+
+
 class Layout(BaseModel):
     """
     Rooms, which rooms connect, and fixed obstacles.
@@ -562,6 +760,30 @@ class MonitorSummaryResponse(BaseModel):
     session_id: str
     states_checked: int
     violations: list[MonitorViolation]
+
+
+class PendingClassOut(BaseModel):
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    count: int
+    covered: bool
+    covered_by: list[str]
+    hazard_class: str
+    requests: list[WaitingRequestOut]
+    suggested_template: dict[str, Any] | None
+
+
+class PendingExtensionsResponse(BaseModel):
+    """
+    Requests waiting for a library extension, grouped by hazard class.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    classes: list[PendingClassOut]
+    count: int
 
 
 class Person(BaseModel):
@@ -642,6 +864,32 @@ class ScopeOut(BaseModel):
     steps: list[ScopeStepOut]
 
 
+class TemplateVariable(BaseModel):
+    """
+    A typed `$name` a template's conditions use; entity variables are bound from the scene.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    default: Any | None = None
+    description: str | None = ''
+    name: Annotated[str, Field(pattern='^[a-z][a-z0-9_]*$')]
+    type: Literal['object', 'person', 'room', 'robot', 'entity', 'number', 'string', 'bool']
+
+
+class VocabularyResponse(BaseModel):
+    """
+    The condition language's predicates and functions, and the action model.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    actions: list[ActionOut]
+    symbols: list[SymbolOut]
+
+
 class ContractResponse(BaseModel):
     """
     A Task Safety Contract: what every plan and every action of the task must keep.
@@ -661,6 +909,48 @@ class ContractResponse(BaseModel):
     scope: ScopeOut | None = None
     status: Literal['active', 'exhausted'] | None = 'active'
     template_versions: dict[str, int]
+
+
+class CuratedTemplateResponse(BaseModel):
+    """
+    A stored template with what its validation warned about.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    aborts: Annotated[list[TemplateCondition] | None, Field(validate_default=True)] = []
+    analysis: Literal['simulate', 'declared'] | None = 'simulate'
+    """
+    How Stage 1 uses a template: checked on every simulated plan, or only when a declared
+    rule (intent, consent, a person's profile) proposes its hazard class.
+    """
+    applies: Literal['matched', 'always'] | None = 'matched'
+    """
+    Which contracts a template's conditions join: those of tasks where Stage 1 found its
+    hazard (`matched`), or every contract (`always`: the baseline envelope).
+    """
+    author: str | None = 'safegate'
+    category: Literal['physical', 'psychological', 'operational', 'consequential']
+    created_at: AwareDatetime | None = None
+    description: Annotated[str, Field(min_length=1)]
+    guards: Annotated[list[TemplateCondition] | None, Field(validate_default=True)] = []
+    hazard_class: Annotated[str, Field(max_length=120, pattern='^[a-z][a-z0-9_]*$')]
+    id: Annotated[str, Field(max_length=120, pattern='^[a-z][a-z0-9_.\\-]*$')]
+    invariants: Annotated[
+        list[TemplateCondition] | None, Field(validate_default=True)
+    ] = []
+    iso_clause: str | None = ''
+    name: Annotated[str, Field(max_length=200, min_length=1)]
+    preventability: Literal['preventable', 'unpreventable', 'unknown']
+    severity: Literal['critical', 'high', 'moderate', 'low', 'negligible']
+    source: Literal['seed', 'user'] | None = 'seed'
+    status: Literal['draft', 'active', 'deprecated'] | None = 'active'
+    variables: Annotated[
+        list[TemplateVariable] | None, Field(validate_default=True)
+    ] = []
+    version: int | None = 1
+    warnings: list[IssueOut]
 
 
 class GateRequest(BaseModel):
@@ -753,6 +1043,63 @@ class ReevaluatedRequest(BaseModel):
     reevaluated_request_id: str
 
 
+class TemplateResponse(BaseModel):
+    """
+    A template at one version.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    aborts: Annotated[list[TemplateCondition] | None, Field(validate_default=True)] = []
+    analysis: Literal['simulate', 'declared'] | None = 'simulate'
+    """
+    How Stage 1 uses a template: checked on every simulated plan, or only when a declared
+    rule (intent, consent, a person's profile) proposes its hazard class.
+    """
+    applies: Literal['matched', 'always'] | None = 'matched'
+    """
+    Which contracts a template's conditions join: those of tasks where Stage 1 found its
+    hazard (`matched`), or every contract (`always`: the baseline envelope).
+    """
+    author: str | None = 'safegate'
+    category: Literal['physical', 'psychological', 'operational', 'consequential']
+    created_at: AwareDatetime | None = None
+    description: Annotated[str, Field(min_length=1)]
+    guards: Annotated[list[TemplateCondition] | None, Field(validate_default=True)] = []
+    hazard_class: Annotated[str, Field(max_length=120, pattern='^[a-z][a-z0-9_]*$')]
+    id: Annotated[str, Field(max_length=120, pattern='^[a-z][a-z0-9_.\\-]*$')]
+    invariants: Annotated[
+        list[TemplateCondition] | None, Field(validate_default=True)
+    ] = []
+    iso_clause: str | None = ''
+    name: Annotated[str, Field(max_length=200, min_length=1)]
+    preventability: Literal['preventable', 'unpreventable', 'unknown']
+    severity: Literal['critical', 'high', 'moderate', 'low', 'negligible']
+    source: Literal['seed', 'user'] | None = 'seed'
+    status: Literal['draft', 'active', 'deprecated'] | None = 'active'
+    variables: Annotated[
+        list[TemplateVariable] | None, Field(validate_default=True)
+    ] = []
+    version: int | None = 1
+
+
+class TemplateVersionOut(BaseModel):
+    """
+    One stored version of a template.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    author: str
+    created_at: AwareDatetime
+    status: Literal['draft', 'active', 'deprecated']
+    template: TemplateResponse
+    template_id: str
+    version: int
+
+
 class VerifyRequest1(BaseModel):
     """
     What a planner POSTs to /verify: a plan and the contract it must keep (by id, or inline).
@@ -797,6 +1144,58 @@ class VerifyRequest(RootModel[VerifyRequest1 | VerifyRequest2]):
     """
 
 
+class GateRecordResponse(BaseModel):
+    """
+    A decision's audit record, with the decisions that followed it.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    analyzer: str
+    contract_id: str | None
+    created_at: AwareDatetime
+    decision: Literal['authorize', 'defer', 'reject']
+    defer_kind: Literal['clarify', 'extend_library'] | None
+    downgrade_reason: str | None
+    downgraded: bool
+    """
+    Rejected since: the contract's verification attempts ran out.
+    """
+    followed_by: list[str]
+    """
+    Answers and re-evaluations, oldest first.
+    """
+    hazard_report: HazardReport | None
+    """
+    Stage 1's report: hazard proposals and unknowns.
+    """
+    id: str
+    parent_request_id: str | None
+    question: str | None
+    request: GateRequest
+    """
+    The request as it was sent.
+    """
+    request_id: str
+    """
+    The same id, under the name the gate answered it.
+    """
+    rule: Literal['R1', 'R1b', 'R2', 'R3', 'R3b', 'R4']
+    template_versions: dict[str, int]
+    """
+    Each template the contract used, with its version.
+    """
+    timings: dict[str, float]
+    """
+    Milliseconds per stage.
+    """
+    triggers: list[dict[str, Any]]
+    """
+    The hazards and unknowns that decided it, as the analysis reported them.
+    """
+
+
 class ReevaluateClassResponse(BaseModel):
     model_config = ConfigDict(
         extra='allow',
@@ -804,3 +1203,75 @@ class ReevaluateClassResponse(BaseModel):
     count: int
     hazard_class: str
     results: list[ReevaluatedRequest]
+
+
+class TemplateHistoryResponse(BaseModel):
+    """
+    A template at its current version, with every version kept, oldest first.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    aborts: Annotated[list[TemplateCondition] | None, Field(validate_default=True)] = []
+    analysis: Literal['simulate', 'declared'] | None = 'simulate'
+    """
+    How Stage 1 uses a template: checked on every simulated plan, or only when a declared
+    rule (intent, consent, a person's profile) proposes its hazard class.
+    """
+    applies: Literal['matched', 'always'] | None = 'matched'
+    """
+    Which contracts a template's conditions join: those of tasks where Stage 1 found its
+    hazard (`matched`), or every contract (`always`: the baseline envelope).
+    """
+    author: str | None = 'safegate'
+    category: Literal['physical', 'psychological', 'operational', 'consequential']
+    created_at: AwareDatetime | None = None
+    description: Annotated[str, Field(min_length=1)]
+    guards: Annotated[list[TemplateCondition] | None, Field(validate_default=True)] = []
+    hazard_class: Annotated[str, Field(max_length=120, pattern='^[a-z][a-z0-9_]*$')]
+    id: Annotated[str, Field(max_length=120, pattern='^[a-z][a-z0-9_.\\-]*$')]
+    invariants: Annotated[
+        list[TemplateCondition] | None, Field(validate_default=True)
+    ] = []
+    iso_clause: str | None = ''
+    name: Annotated[str, Field(max_length=200, min_length=1)]
+    preventability: Literal['preventable', 'unpreventable', 'unknown']
+    severity: Literal['critical', 'high', 'moderate', 'low', 'negligible']
+    source: Literal['seed', 'user'] | None = 'seed'
+    status: Literal['draft', 'active', 'deprecated'] | None = 'active'
+    variables: Annotated[
+        list[TemplateVariable] | None, Field(validate_default=True)
+    ] = []
+    version: int | None = 1
+    versions: list[TemplateVersionOut]
+
+
+class TemplateListResponse(BaseModel):
+    """
+    One page of the library (every match when no `limit` is given).
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    count: int
+    """
+    How many templates this answer holds.
+    """
+    limit: int | None
+    """
+    The page size asked for; null when not paging.
+    """
+    offset: int
+    """
+    How many matches were skipped before this page.
+    """
+    templates: list[TemplateResponse]
+    """
+    Templates at their current version, as `GET /templates/{template_id}` answers them without `versions`.
+    """
+    total: int
+    """
+    How many templates match, on every page together.
+    """
