@@ -42,6 +42,15 @@ class ReadinessResponse(_Out):
     templates: int = Field(description="Active templates loaded.")
 
 
+class StoredReferencePlan(_Out):
+    """What the audit trail keeps of a reference plan: the plan handed out, or null and why."""
+
+    plan: list[dict[str, Any]] | None = Field(
+        description="The steps as handed out (the plan wire shape), or null when none.")
+    goal: str | None = Field(default=None, description="What the plan reaches.")
+    reason: str | None = Field(default=None, description="Why there is a plan, or why none.")
+
+
 class GateRecordResponse(_Out):
     """A decision's audit record, with the decisions that followed it."""
 
@@ -67,6 +76,9 @@ class GateRecordResponse(_Out):
                                          "attempts ran out.")
     downgrade_reason: str | None
     followed_by: list[str] = Field(description="Answers and re-evaluations, oldest first.")
+    reference_plan: StoredReferencePlan | None = Field(
+        default=None, description="The reference plan handed out with the decision, when the "
+                                  "request asked for one (null otherwise).")
 
 
 class IssueOut(_Out):

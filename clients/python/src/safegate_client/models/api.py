@@ -455,6 +455,28 @@ class SortOrder(RootModel[Literal['asc', 'desc']]):
     root: Literal['asc', 'desc']
 
 
+class StoredReferencePlan(BaseModel):
+    """
+    What the audit trail keeps of a reference plan: the plan handed out, or null and why.
+    """
+
+    model_config = ConfigDict(
+        extra='allow',
+    )
+    goal: str | None = None
+    """
+    What the plan reaches.
+    """
+    plan: list[dict[str, Any]] | None
+    """
+    The steps as handed out (the plan wire shape), or null when none.
+    """
+    reason: str | None = None
+    """
+    Why there is a plan, or why none.
+    """
+
+
 class SymbolOut(BaseModel):
     model_config = ConfigDict(
         extra='allow',
@@ -1173,6 +1195,10 @@ class GateRecordResponse(BaseModel):
     id: str
     parent_request_id: str | None
     question: str | None
+    reference_plan: StoredReferencePlan | None = None
+    """
+    The reference plan handed out with the decision, when the request asked for one (null otherwise).
+    """
     request: GateRequest
     """
     The request as it was sent.
