@@ -15,6 +15,19 @@ from pathlib import Path
 import httpx
 
 
+def wait_until_ready(base: str, seconds: float, what: str) -> None:
+    """Poll `/readyz` until it answers 200; RuntimeError after `seconds`."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        try:
+            if httpx.get(base + "/readyz", timeout=1).status_code == 200:
+                return
+        except httpx.HTTPError:
+            pass
+        time.sleep(0.1)
+    raise RuntimeError(f"{what} did not become ready in {seconds:.0f} s")
+
+
 def free_port() -> int:
     with socket.socket() as sock:
         sock.bind(("127.0.0.1", 0))
@@ -47,16 +60,7 @@ def running_server(extra_env: dict[str, str] | None = None,
         )
         base = f"http://127.0.0.1:{port}"
         try:
-            deadline = time.monotonic() + 60
-            while time.monotonic() < deadline:
-                try:
-                    if httpx.get(base + "/readyz", timeout=1).status_code == 200:
-                        break
-                except httpx.HTTPError:
-                    pass
-                time.sleep(0.1)
-            else:
-                raise RuntimeError("SafeGate did not become ready in 60 s")
+            wait_until_ready(base, 60, "SafeGate")
             yield base
         finally:
             process.terminate()

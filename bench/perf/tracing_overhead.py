@@ -30,7 +30,7 @@ from rich.table import Table
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from _rawhttp import Connection, encode_post
-from _server import free_port
+from _server import free_port, wait_until_ready
 
 REPO = Path(__file__).resolve().parents[2]
 CASES = REPO / "bench" / "cases" / "benchmark.jsonl"
@@ -51,16 +51,7 @@ def server(mode: str) -> Iterator[str]:
             env=env, cwd=REPO, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         base = f"http://127.0.0.1:{port}"
         try:
-            deadline = time.monotonic() + 90
-            while time.monotonic() < deadline:
-                try:
-                    if httpx.get(base + "/readyz", timeout=1).status_code == 200:
-                        break
-                except httpx.HTTPError:
-                    pass
-                time.sleep(0.1)
-            else:
-                raise RuntimeError(f"the {mode} server did not become ready in 90 s")
+            wait_until_ready(base, 90, f"the {mode} server")
             yield base
         finally:
             process.terminate()
