@@ -273,9 +273,8 @@ class Grounder:
         if phrase.pronoun in ("him", "her", "them", "himself", "herself"):
             gender = {"him": "male", "himself": "male", "her": "female",
                       "herself": "female"}.get(phrase.pronoun)
-            recent = self.last_person.get(None)
-            last = self.last_person.get(gender) or (recent if gender is None or (
-                recent is not None and self._gender(recent) is None) else None)
+            last = self.last_person.get(gender) or (self.last_person.get(None)
+                                                    if gender is None else None)
             if last is not None:
                 return Referent(phrase, "person", (last,))
             matches = [p for p in self.people if p != self._user_id
