@@ -213,8 +213,10 @@ class Grounder:
             owner = self._person(NounPhrase(phrase.possessor, head=phrase.possessor,
                                             pronoun=phrase.possessor if phrase.possessor in (
                                                 "me", "him", "her", "them", "us") else None))
-            if owner is not None and owner.ids:
-                return Referent(phrase, "person", owner.ids)
+            if owner is not None:  # whose arm is not clear: ask, never fetch "an arm"
+                return Referent(phrase, "person", owner.ids, owner.candidates)
+            self.gaps.append(Gap(phrase.text, "nobody it could belong to"))
+            return Referent(phrase, "none")
         if phrase.head in _EVERYTHING and not phrase.contents and self.named_objects:
             # "put the lot in the bowl", "everything back in the fridge": all named so far
             return Referent(phrase, "object", tuple(self.named_objects[:MAX_GROUP]))
@@ -314,6 +316,9 @@ class Grounder:
                                              and len(matches) > 1)) else tuple(matches[:1])
         if len(matches) > 1 and len(ids) == 1 and not phrase.every:
             return Referent(phrase, "person", (), tuple(matches))
+        titled = TITLES.get(phrase.phrase.split()[0]) if phrase.phrase else None
+        if titled is not None and len(ids) == 1:
+            self.last_person[titled] = ids[0]  # "Mrs Ade ... her arm": the title says who
         return self._remember_person(Referent(phrase, "person", ids))
 
     def _same_kind(self, role: str | None, wanted: PersonWord) -> bool:
