@@ -168,11 +168,15 @@ class Grounder:
         self.last_object = self.last_single = (owned[0],)
         return Referent(phrase, "object", (owned[0],))
 
+    def _possessor(self, possessor: str) -> Referent | None:
+        """The person a possessor names ("her", "mum", "Sam")."""
+        return self._person(NounPhrase(possessor, head=possessor, pronoun=possessor if (
+            possessor in ("me", "him", "her", "them", "us")) else None))
+
     def _owned_by(self, ids: list[str], possessor: str) -> list[str]:
         """The objects among `ids` whose `owner` is the person the possessor names ("mum",
         "her", "Sam")."""
-        owner = self._person(NounPhrase(possessor, head=possessor, pronoun=possessor if (
-            possessor in ("me", "him", "her", "them", "us")) else None))
+        owner = self._possessor(possessor)
         names = _words_of(possessor, *(owner.ids if owner else ()))
         if owner is not None and owner.ids:
             person = self.people[owner.ids[0]]
@@ -210,9 +214,7 @@ class Grounder:
             return Referent(phrase, "none")
         if phrase.head in BODY_PARTS and phrase.possessor and not place:
             # "hold her arm", "take his hand": the person, touched, not a thing to carry
-            owner = self._person(NounPhrase(phrase.possessor, head=phrase.possessor,
-                                            pronoun=phrase.possessor if phrase.possessor in (
-                                                "me", "him", "her", "them", "us") else None))
+            owner = self._possessor(phrase.possessor)
             if owner is not None:  # whose arm is not clear: ask, never fetch "an arm"
                 return Referent(phrase, "person", owner.ids, owner.candidates)
             self.gaps.append(Gap(phrase.text, "nobody it could belong to"))
