@@ -179,7 +179,9 @@ def declared(grounded: Sequence[Grounded], conditions: Sequence[Clause], manner:
             if owner is not None:
                 fire("private_information", item.clause.text, {})
     for clause in conditions:
-        if clause.kind == "purpose" and (harm_stated(clause.text, lexicon)
-                                         or "harmful_purpose" in clause.manner):
+        # "so nobody trips" names the harm to avoid it; "so she can't get up" wants it.
+        if clause.kind == "purpose" and (harm_stated(clause.text, lexicon) or (
+                "harmful_purpose" in clause.manner and not clause.negated
+                and not _words(clause.text) & _PROTECTIVE)):
             fire("harmful_purpose", clause.text, {})
     return list(found.values())

@@ -69,6 +69,9 @@ _EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
 
+_INDEFINITE = frozenset({"everything", "anything", "something", "whatever"})
+
+
 def _words_of(*texts: str | None) -> set[str]:
     found: set[str] = set()
     for text in texts:
@@ -503,7 +506,8 @@ class Grounder:
         # A thing to handle must be named by a noun for a physical thing ("the full volume" is
         # none); a place only needs to be a word ("the bedside", "each end").
         head = singular(phrase.head) if phrase.head else ""
-        thing = self._thing_named(phrase)
+        # "everything left on the nightstand" names whatever is there, never a new thing.
+        thing = None if _INDEFINITE & set(phrase.words) else self._thing_named(phrase)
         if thing is not None:
             phrase, head = thing, singular(thing.head)
         elif not place or not head or not self.lexicon.is_english(head):

@@ -208,6 +208,17 @@ _NEXT_AS_ADJECTIVE = frozenset({"the", "a", "this", "that", "my", "your", "our",
 _ADVERBIAL_PARTICLES = frozenset({"up", "away", "down", "off", "out", "together"})
 
 
+_ASPECT = frozenset({"finish", "start", "begin", "keep", "continue", "resume"})
+
+
+def _aspect_dropped(words: list[str], lexicon: Lexicon) -> list[str]:
+    """ "Finish loading the dishwasher", "keep stirring the soup": the task is the -ing verb."""
+    if len(words) > 1 and words[0] in _ASPECT and words[1].endswith("ing") and \
+            lexicon.schemas_of(lexicon.lemma(words[1])):
+        return [lexicon.lemma(words[1]), *words[2:]]
+    return words
+
+
 def _past_tense(word: str, lexicon: Lexicon) -> bool:
     """A regular past form ("dropped", "spilled"): never the verb of an order."""
     return word.endswith("ed") and lexicon.lemma(word) != word and word not in (
@@ -479,6 +490,7 @@ class Reader:
         words = _without_adverb_pairs(words)
         if not words:
             return None
+        words = _aspect_dropped(words, lexicon)
         verb, rest = self._verb(words)
         if verb is not None and verb not in ("keep", "leave") and (
                 lexicon.schemas_of(verb)[:1] == ("put",) or verb in ("turn", "set", "switch",
