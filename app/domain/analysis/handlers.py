@@ -9,10 +9,10 @@ in `recipes.py`. Fails: never; a handler whose arguments do not fit adds no step
 
 from __future__ import annotations
 
-from app.domain.analysis.recipes import RECIPES
+from app.domain.analysis.recipes import RECIPES, empty_container
 from app.domain.analysis.schemas import DECLARED_SCHEMAS, NEXT_TO, Grounded
 from app.domain.analysis.steps import PlanBuilder
-from app.domain.world.object_types import normalize_type
+from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
 
 _WET_CLEANING = frozenset({"wash", "rinse", "scrub", "mop up", "wash up", "rinse out", "scour",
                            "disinfect", "descale", "degrease", "clean out"})
@@ -28,12 +28,47 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
     if grounded.into_hands and schema in ("put", "fetch", "give", "pick"):
         handler = _give  # "straight into his hands": handed over, not set down beside him
     before = len(builder.sketch.literal)
+    if handler is not None and _container_task(builder, grounded):
+        handler = None
     if handler is not None:
         handler(builder, grounded)
     dest = grounded.destination
     if len(builder.sketch.literal) == before and not grounded.objects and dest is not None \
             and dest.ids and dest.kind == "room" and schema in ("fetch", "go", "pick"):
         builder.go_to(dest.ids[0], kind="literal")  # "run out to the garage": go there
+
+
+# Verbs whose object is the container a task fills or empties ("load the dishwasher",
+# "unpack the shopping bag"), not the thing moved.
+_FILLING = frozenset({"load", "pack", "stock", "restock"})
+_EMPTYING = frozenset({"unload", "unpack", "empty out", "clear out", "clear", "clear off",
+                       "clear away", "strip"})
+
+
+def _container_task(builder: PlanBuilder, grounded: Grounded) -> bool:
+    """Load or empty a receptacle named as the object, when no destination is named. A fixed
+    receptacle (a dishwasher, a table) is never lifted; a portable one is emptied only by a verb
+    that says so ("unpack the bag"), since "clear the plates" moves the plates."""
+    verb = grounded.clause.verb
+    ids = _ids(grounded)
+    if grounded.destination is not None or not ids or verb not in _FILLING | _EMPTYING:
+        return False
+    state = builder.state
+    for obj in ids:
+        kind = state.objects[obj].kind
+        if kind.flag("receptacle") is not True and kind.name not in CONTAINER_TYPES:
+            return False
+        fixed = state.value("pickupable", (obj,)) is False
+        if not fixed and verb not in ("unload", "unpack", "empty out", "clear out"):
+            return False
+    for obj in ids:
+        builder.go_to(obj, kind="literal")
+        if verb in _EMPTYING:
+            empty_container(builder, obj)
+        elif state.objects[obj].kind.flag("openable") is True and builder.act(
+                "OpenObject", obj, kind="enabling"):
+            builder.cleanup("CloseObject", obj)
+    return True
 
 
 def _ids(grounded: Grounded, kind: str = "object") -> list[str]:

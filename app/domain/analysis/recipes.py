@@ -134,10 +134,47 @@ def pour(builder: PlanBuilder, grounded: Grounded) -> None:
         target = objects[0]  # "ladle a bowl of the chowder from the pot": into the bowl
     if dest is not None and dest.kind == "room" and target is not None:
         target = builder.surface(target)
+    if target is None and source is not None and grounded.clause.verb in _EMPTYING:
+        empty_container(builder, source)
+        return
     if source is None or target is None or not builder.acquire(source):
         return
     builder.go_to(target)
     builder.act("Pour", source, target)
+
+
+# "Empty the dishwasher", "drain the bath": with no place named, what is in it comes out.
+_EMPTYING = frozenset({"empty", "drain", "drain off", "tip out", "pour out", "dump out"})
+_PUT_AWAY = ("Cabinet", "Shelf", "Drawer")
+
+
+def empty_container(builder: PlanBuilder, container: str) -> None:
+    """Empty a container where no destination was named: the things in it are put away in its
+    room, a portable vessel's liquid is poured into a sink, and a fixed one (a bath, a tub, a
+    washing machine) is drained where it stands."""
+    state = builder.state
+    room = state.room_of(container)
+    inside = [o.id for o in state.objects.values() if o.parent == container]
+    # Things cleared from a room's table go back to the kitchen, where they are kept.
+    kitchen = next((r for r in state.rooms if "kitchen" in r), None) or room
+    for obj in inside:
+        if state.value("pickupable", (obj,)) is False:
+            continue
+        away = builder.find_type(*_PUT_AWAY, room=room) or builder.find_type(
+            *_PUT_AWAY, room=kitchen) or builder.surface(kitchen, avoid=container)
+        builder.place(obj, away)
+    filled = state.value("filled", (container,)) is True
+    if not filled and inside:
+        return
+    portable = filled and state.value("pickupable", (container,)) is True
+    sink = builder.find_type("Sink", "SinkBasin", room=room) or builder.find_type(
+        "Sink", "SinkBasin")
+    if portable and sink is not None and sink != container and builder.acquire(container):
+        builder.go_to(sink)
+        builder.act("Pour", container, sink)
+        return
+    builder.go_to(container)
+    builder.act("EmptyLiquid", container)
 
 
 def _fill_at_tap(builder: PlanBuilder, container: str, liquid: str) -> None:
