@@ -37,9 +37,10 @@ web:
 	cd web && npm ci --no-audit --no-fund && npm run build
 
 ## Run every test (SQLite and PostgreSQL for real, the curator page in headless Chromium),
-## then the static checks.
+## then the static checks. The tests run in one worker process per core (at most four; each
+## has its own databases, servers and ports), and the slowest are listed so growth shows.
 test: $(STAMP) browsers
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n auto --maxprocesses 4 --durations 15
 	$(MAKE) --no-print-directory lint
 
 lint: $(STAMP)
