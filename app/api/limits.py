@@ -1,18 +1,15 @@
-"""Input limits at the edge: the shape of every JSON body, and the sizes the settings allow.
+"""Input limits at the edge: the shape of every JSON body.
 
 In: the JSON body of any POST/PUT/PATCH request (`json_body_within_limits`, installed app-wide
-by `create_app`, runs after the body parsed and before the route's own validation), and the
-validated gate requests, initial states and plans (`check_gate_request`, `check_initial_state`,
-`check_plan`, called by the robot routes).
+by `create_app`, runs after the body parsed and before the route's own validation).
 Out: nothing when the input is within limits.
 Limits: JSON nesting at most `max_json_depth` deep; every number finite and within
 `MAX_JSON_NUMBER` of zero (NaN, Infinity and 400-digit integers would otherwise reach float
 arithmetic, the solver or a JSONB column); no string (value or key) holding a NUL character or
-a lone UTF-16 surrogate (PostgreSQL cannot store either); a command of at most
-`max_command_chars` characters; at most `max_scene_entities` items in each scene list (objects,
-people, relations, rooms, connections, obstacles); at most `max_plan_steps` plan steps. The
-models' own caps (`MAX_COMMAND_CHARS`, `MAX_ENTITIES`, `MAX_PLAN_STEPS`) bound what a setting
-can allow. The body's size is the middleware's business (413, `app/api/observability.py`).
+a lone UTF-16 surrogate (PostgreSQL cannot store either). The sizes of what the models hold (a
+command's length, scene lists, plan steps) are the services' check, one rule for every route
+and the CLI (`app/services/input_limits.py`); the body's size is the middleware's business
+(413, `app/api/observability.py`).
 Fails: `InvalidInput` naming the offending field (e.g. `body.scene.objects.3.properties.mass_kg`),
 which `app/api/problems.py` answers as a 422 problem+json.
 """
@@ -28,13 +25,10 @@ from starlette.requests import HTTPConnection, Request
 
 from app.config import Settings
 from app.domain.errors import InvalidInput
-from app.domain.models import GateRequest, InitialState, Scene
 
 MAX_JSON_NUMBER = 1e15
 _WRITE_METHODS = frozenset({"POST", "PUT", "PATCH"})
 _UNSTORABLE_CHARACTERS = re.compile("[\x00\ud800-\udfff]")
-_SCENE_LISTS = ("objects", "people", "relations")
-_LAYOUT_LISTS = ("rooms", "connections", "obstacles")
 # For `_plainly_within_limits`, which reads the raw bytes of a body that is valid JSON.
 _KEPT = b'[]{}",.0123456789eEIN'
 _DROPPED = bytes(b for b in range(256) if b not in _KEPT)
@@ -141,53 +135,3 @@ async def json_body_within_limits(connection: HTTPConnection) -> None:
     except (ValueError, RecursionError):
         return  # FastAPI has already refused what it could not parse; nothing to add
     check_json_value(value, max_depth=settings.max_json_depth)
-
-
-def _check_scene(scene: Scene | None, settings: Settings, prefix: str) -> None:
-    if scene is None:
-        return
-    limit = settings.max_scene_entities
-    lists: list[tuple[str, Sequence[object]]] = [
-        (f"{prefix}.{name}", getattr(scene, name)) for name in _SCENE_LISTS]
-    if scene.layout is not None:
-        lists += [(f"{prefix}.layout.{name}", getattr(scene.layout, name))
-                  for name in _LAYOUT_LISTS]
-    for field, items in lists:
-        if len(items) > limit:
-            raise InvalidInput(f"{field} has {len(items)} items; at most {limit} are allowed",
-                               field=field, limit=limit)
-
-
-def check_gate_request(request: GateRequest, settings: Settings) -> None:
-    """Check a gate request against the configured command length and scene sizes.
-
-    Raises:
-        InvalidInput: the command or a scene list is longer than the settings allow.
-    """
-    limit = settings.max_command_chars
-    if len(request.command) > limit:
-        raise InvalidInput(f"the command has {len(request.command)} characters; at most "
-                           f"{limit} are allowed", field="body.command", limit=limit)
-    _check_scene(request.scene, settings, "body.scene")
-
-
-def check_initial_state(state: InitialState | None, settings: Settings) -> None:
-    """Check an initial state's scene against the configured scene sizes.
-
-    Raises:
-        InvalidInput: a scene list is longer than the settings allow.
-    """
-    if state is not None:
-        _check_scene(state.scene, settings, "body.initial_state.scene")
-
-
-def check_plan(plan: Sequence[object], settings: Settings) -> None:
-    """Check a plan against the configured plan length.
-
-    Raises:
-        InvalidInput: the plan has more steps than the settings allow.
-    """
-    limit = settings.max_plan_steps
-    if len(plan) > limit:
-        raise InvalidInput(f"the plan has {len(plan)} steps; at most {limit} are allowed",
-                           field="body.plan", limit=limit)

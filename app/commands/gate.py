@@ -53,13 +53,11 @@ def _request(command: str, scene_file: Path | None) -> GateRequest:
 
 
 def _decide(request: GateRequest, *, reference_plan: bool = False) -> GateResponse:
-    from app.api.limits import check_gate_request
     from app.api.schemas import gate_response
     from app.services import build_components
 
     configured = settings()
     try:
-        check_gate_request(request, configured)
         components = build_components(configured)
     except SafeGateError as error:
         fail(f"error: {error.detail}")

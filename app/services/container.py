@@ -31,6 +31,7 @@ from app.services.audit_trail import AuditTrail
 from app.services.curation import CurationService
 from app.services.extensions import ExtensionService
 from app.services.gate import GateService
+from app.services.input_limits import InputLimits
 from app.services.monitoring import MonitorService
 from app.services.readiness import ReadinessProbe
 from app.services.template_cache import TemplateCache
@@ -70,7 +71,8 @@ class Components:
         """The app's monitoring service (`monitoring_fanout.monitoring_for` calls this once)."""
         stores = self.repositories
         return MonitorService(monitoring=stores.monitoring, contracts=stores.contracts,
-                              audit=stores.audit, metrics=self.metrics, origin=origin)
+                              audit=stores.audit, metrics=self.metrics, origin=origin,
+                              limits=InputLimits.from_settings(self.settings))
 
     def close(self) -> None:
         self.engine.dispose()
@@ -144,6 +146,7 @@ def build_deciders(settings: Settings, repositories: Repositories, templates: Te
     Raises:
         ValueError: an LLM analyzer is asked for but no model is configured.
     """
+    limits = InputLimits.from_settings(settings)
     analyzer = build_analyzer(settings, cache=repositories.analysis_cache)
     reader = analyzer if isinstance(analyzer, Reader) else SymbolicAnalyzer(
         reject_from=settings.theta)
@@ -151,14 +154,14 @@ def build_deciders(settings: Settings, repositories: Repositories, templates: Te
         audit=repositories.audit, templates=templates, analyzer=analyzer, reader=reader,
         policy=GatePolicy(theta=settings.theta), metrics=metrics,
         max_verify_attempts=settings.max_verify_attempts,
-        solver_timeout_ms=settings.solver_timeout_ms)
+        solver_timeout_ms=settings.solver_timeout_ms, limits=limits)
     return Deciders(
         gate=gate,
         extensions=ExtensionService(audit=repositories.audit, templates=repositories.templates,
                                     cache=templates, gate=gate),
         verification=VerificationService(
             contracts=repositories.contracts, audit=repositories.audit, metrics=metrics,
-            solver_timeout_ms=settings.solver_timeout_ms),
+            solver_timeout_ms=settings.solver_timeout_ms, limits=limits),
     )
 
 

@@ -30,6 +30,7 @@ from app.domain.models import GateRequest
 from app.domain.pipeline import Analyzer, GateResult, Reader, run_gate
 from app.domain.planning import ReferencePlan, reference_plan
 from app.metrics import Metrics
+from app.services.input_limits import MODEL_CAPS, InputLimits
 from app.services.template_cache import TemplateCache
 from app.services.text_hygiene import for_analysis
 from app.store.records import ContractRecord, GateRecord
@@ -94,7 +95,8 @@ class GateService:
 
     def __init__(self, *, audit: AuditRepository, templates: TemplateCache, analyzer: Analyzer,
                  reader: Reader | None, policy: GatePolicy, metrics: Metrics,
-                 max_verify_attempts: int, solver_timeout_ms: int) -> None:
+                 max_verify_attempts: int, solver_timeout_ms: int,
+                 limits: InputLimits = MODEL_CAPS) -> None:
         """Args:
             audit: where decisions (and their contracts) are recorded.
             templates: the active templates.
@@ -104,7 +106,9 @@ class GateService:
             metrics: where decisions are counted.
             max_verify_attempts: each new contract's verification budget.
             solver_timeout_ms: Z3's budget per check of a reference plan.
+            limits: the sizes a request may have, however it reaches the gate.
         """
+        self._limits = limits
         self._audit = audit
         self._templates = templates
         self._analyzer = analyzer
@@ -118,6 +122,7 @@ class GateService:
                with_reference_plan: bool = False) -> Decided:
         """Run Stages 1-4 on a request and record it (and its contract) in the audit trail;
         with `with_reference_plan`, plan an authorized task and prove the plan (Stage 5)."""
+        self._limits.check_gate_request(request)
         readable = for_analysis(request)
         started_ns = time.time_ns()
         result = run_gate(readable, templates=self._templates.index(), analyzer=self._analyzer,

@@ -44,6 +44,7 @@ from app.domain.errors import Conflict, InvalidInput, SafeGateError
 from app.domain.models import InitialState
 from app.domain.monitor import MonitorSummary, Verdict, decode_message
 from app.metrics import Metrics
+from app.services.input_limits import MODEL_CAPS, InputLimits
 from app.services.monitoring_commits import StepCommitter
 from app.services.monitoring_loader import SessionLoader
 from app.services.monitoring_sessions import UNDECODABLE, LiveSession, Subscriber
@@ -59,7 +60,8 @@ class MonitorService:
     blocking ones (`open_session`) in worker threads."""
 
     def __init__(self, *, monitoring: MonitorRepository, contracts: ContractRepository,
-                 audit: AuditRepository, metrics: Metrics, origin: str | None = None) -> None:
+                 audit: AuditRepository, metrics: Metrics, origin: str | None = None,
+                 limits: InputLimits = MODEL_CAPS) -> None:
         """Args:
             monitoring: the sessions and their event logs.
             contracts: the contracts sessions enforce.
@@ -67,7 +69,9 @@ class MonitorService:
             metrics: where open sessions and halts are counted.
             origin: this replica's id when events fan out to other replicas through the
                 database (PostgreSQL); None when this process is the only one (SQLite).
+            limits: the most items a list of a session's initial scene may have.
         """
+        self._limits = limits
         self._monitoring = monitoring
         self._contracts = contracts
         self._audit = audit
@@ -96,6 +100,7 @@ class MonitorService:
             NotFound: no such contract. Conflict: the contract is exhausted.
             FormulaError: a condition of the contract cannot be monitored.
         """
+        self._limits.check_initial_state(initial_state)
         stored = self._contracts.get_contract(contract_id)
         if stored.status is ContractStatus.EXHAUSTED:
             raise Conflict(f"contract {contract_id!r} is exhausted: its task was rejected")

@@ -31,6 +31,7 @@ from app.domain.models import GateRequest, InitialState
 from app.domain.planning import Repair, repair_plan
 from app.domain.verify import Undecided, VerificationResult, Violation, verify_plan
 from app.metrics import Metrics
+from app.services.input_limits import MODEL_CAPS, InputLimits
 from app.store.records import ContractRecord, ContractStatus, VerificationAttemptRecord
 from app.store.repository import AuditRepository, ContractRepository
 
@@ -69,13 +70,16 @@ class VerificationService:
     """Stage 5 with the contracts' attempt budgets and the audit trail."""
 
     def __init__(self, *, contracts: ContractRepository, audit: AuditRepository,
-                 metrics: Metrics, solver_timeout_ms: int) -> None:
+                 metrics: Metrics, solver_timeout_ms: int,
+                 limits: InputLimits = MODEL_CAPS) -> None:
         """Args:
             contracts: the stored contracts and their budgets.
             audit: the gate records a contract came from (its start state; downgrades).
             metrics: where verifications are counted.
             solver_timeout_ms: Z3's budget per check.
+            limits: the most steps a plan, and the most items a scene list, may have.
         """
+        self._limits = limits
         self._contracts = contracts
         self._audit = audit
         self._metrics = metrics
@@ -106,6 +110,8 @@ class VerificationService:
             InvalidInput: neither or both of `contract_id` and `contract`; an inline contract
                 without an initial state; a bad plan step or condition.
         """
+        self._limits.check_plan(plan)
+        self._limits.check_initial_state(initial_state)
         if (contract_id is None) == (contract is None):
             raise InvalidInput("give exactly one of contract_id and contract", field="body")
         timeout_ms = self._timeout_ms

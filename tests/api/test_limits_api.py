@@ -249,6 +249,24 @@ class TestConfiguredLimits:
             "contract_id": contract_id, "initial_state": {"scene": {"objects": objects(4)}}})
         assert refused_field(response) == "body.initial_state.scene.objects"
 
+    def test_answers_are_held_to_todays_settings(self, sqlite_url: str) -> None:
+        """A request stored under wider limits and answered after an operator narrowed them is
+        refused like a new one (the gate service checks every request it decides, re-evaluations
+        too), and nothing new is stored."""
+        wide = Settings(database_url=sqlite_url)
+        with TestClient(create_app(wide)) as client:
+            asked = client.post("/gate", json={
+                "command": "hand the knife to sam",
+                "scene": {"objects": [{"id": "knife_1", "type": "Knife"}, *objects(3)],
+                          "people": [{"id": "sam", "role": "visitor"}]}}).json()
+        assert asked["decision"] == "defer", asked
+        tight = Settings(database_url=sqlite_url, max_scene_entities=3)
+        with TestClient(create_app(tight)) as client:
+            answered = client.post(f"/gate/{asked['request_id']}/answers",
+                                   json={"age_group": "older_adult"})
+            assert refused_field(answered) == "body.scene.objects"
+            assert repository_of(client).list_child_records(asked["request_id"]) == []
+
     def test_the_models_caps_bound_the_settings(self) -> None:
         with pytest.raises(ValueError, match="max_command_chars"):
             Settings(max_command_chars=MAX_COMMAND_CHARS + 1)

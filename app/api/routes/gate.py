@@ -15,9 +15,8 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body, Query, Response
 
 from app.api import analysis_jobs
-from app.api.deps import AuditTrailDep, MetricsDep, PoolDep, SettingsDep
+from app.api.deps import AuditTrailDep, MetricsDep, PoolDep
 from app.api.examples import ANSWERS_EXAMPLES, GATE_EXAMPLES
-from app.api.limits import check_gate_request
 from app.api.observability import GATE_REQUEST_ID_HEADER
 from app.api.openapi import problem_responses
 from app.api.read_schemas import GateRecordResponse
@@ -39,7 +38,6 @@ def _json(answer: analysis_jobs.GateAnswer, metrics: MetricsDep) -> Response:
              responses=problem_responses(403, 503))
 async def post_gate(
     request: Annotated[GateRequest, Body(openapi_examples=GATE_EXAMPLES)],
-    settings: SettingsDep,
     metrics: MetricsDep,
     pool: PoolDep,
     reference_plan: bool = Query(
@@ -53,7 +51,6 @@ async def post_gate(
 
     503 with Retry-After when the analysis workers and their queue are full.
     """
-    check_gate_request(request, settings)
     return _json(await pool.run(analysis_jobs.decide, request, reference_plan), metrics)
 
 

@@ -22,9 +22,8 @@ from fastapi import APIRouter, WebSocket, WebSocketDisconnect, status
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.adapters.tracing import Tracing, stages
-from app.api.deps import MonitoringDep, ReadAccess, RobotAccess, SettingsDep
+from app.api.deps import MonitoringDep, ReadAccess, RobotAccess
 from app.api.examples import MONITOR_OPEN_EXAMPLE
-from app.api.limits import check_initial_state
 from app.api.openapi import problem_responses
 from app.domain.errors import NotFound, SafeGateError
 from app.domain.models import InitialState
@@ -102,10 +101,9 @@ class MonitorSummaryResponse(BaseModel):
              status_code=status.HTTP_201_CREATED, summary="Open a monitoring session",
              responses=problem_responses(
                  403, 404, (409, "The contract is exhausted: its task was rejected."), 503))
-def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep, settings: SettingsDep,
+def open_monitor(body: MonitorOpenRequest, monitoring: MonitoringDep,
                  _: RobotAccess) -> MonitorOpenResponse:
     """Open a session; the initial state defaults to the gate request's scene and robot."""
-    check_initial_state(body.initial_state, settings)
     record = monitoring.open_session(body.contract_id, body.initial_state)
     assert record.id is not None
     return MonitorOpenResponse(session_id=record.id, contract_id=record.contract_id,

@@ -9,8 +9,7 @@ from __future__ import annotations
 from fastapi import APIRouter, Response
 
 from app.api import analysis_jobs
-from app.api.deps import MetricsDep, PoolDep, SettingsDep
-from app.api.limits import check_initial_state, check_plan
+from app.api.deps import MetricsDep, PoolDep
 from app.api.openapi import problem_responses
 from app.api.verify_schemas import VerifyRequest, VerifyResponse
 
@@ -21,15 +20,13 @@ router = APIRouter(tags=["verify"])
              responses=problem_responses(
                  403, 404, (409, "The contract's verification attempts are used up "
                                  "(AttemptsExhausted): its task is rejected."), 503))
-async def post_verify(request: VerifyRequest, settings: SettingsDep, metrics: MetricsDep,
+async def post_verify(request: VerifyRequest, metrics: MetricsDep,
                       pool: PoolDep) -> Response:
     """Verify a plan for every value of the unknown facts; 200 whether or not it passes.
 
     A failed verification spends one of the contract's attempts; the last one downgrades the
     gate decision to reject, and later calls are refused (409 AttemptsExhausted).
     """
-    check_plan(request.plan, settings)
-    check_initial_state(request.initial_state, settings)
     answer = await pool.run(analysis_jobs.verify, request)
     answer.count(metrics)
     return Response(answer.body, media_type="application/json")
