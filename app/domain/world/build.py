@@ -69,9 +69,15 @@ def _species(person: Person) -> str | None:
     return next((w for w in words if w in ANIMAL_TYPES and w != "pet"), None)
 
 
+def _given_name(person: Person) -> str | None:
+    """The name field, or the name records often keep among the properties."""
+    named = person.properties.get("name")
+    return person.name or (named.strip() if isinstance(named, str) and named.strip() else None)
+
+
 def _pet(person: Person, species: str) -> ObjectState:
     return ObjectState(
-        id=person.id, type=species.title().replace(" ", ""), name=person.name,
+        id=person.id, type=species.title().replace(" ", ""), name=_given_name(person),
         room=person.room, position=_point(person.position),
         properties=frozen_mapping({**person.properties, "species": species, "animal": True}))
 
@@ -85,8 +91,9 @@ def _pets(scene: Scene, objects: Mapping[str, ObjectState]) -> Iterable[ObjectSt
             continue
         same = [o for o in objects.values() if normalize_type(o.type) == normalize_type(
             species) or str(o.properties.get("species", "")).lower() == species]
-        if any(person.name and (o.name or "").lower() == person.name.lower() for o in same) \
-                or (same and not person.name):
+        name = _given_name(person)
+        if any(name and (o.name or "").lower() == name.lower() for o in same) \
+                or (same and not name):
             continue
         yield _pet(person, species)
 
@@ -112,11 +119,8 @@ def _person(person: Person, user: UserProfile | None, holding: frozenset[str]) -
             "asleep", "sleeping", "lying_asleep"):
         properties["cognitive_state"] = "typical"
     properties.setdefault("mobility", "independent")
-    # Records often keep the name among the properties ("properties": {"name": "Maisie"}).
-    named = properties.get("name")
     return PersonState(
-        id=person.id, role=person.role,
-        name=person.name or (named if isinstance(named, str) and named.strip() else None),
+        id=person.id, role=person.role, name=_given_name(person),
         room=person.room,
         posture=person.posture, position=_point(person.position),
         properties=frozen_mapping(properties), holding=holding,
