@@ -110,6 +110,11 @@ class Grounder:
         self.named_objects: list[str] = []
         self.last_place: Referent | None = None
         self.last_person: dict[str | None, str] = {}
+        # A pet a remark names ("Biscuit's been good, give him a treat") is who a later him or
+        # her means, unless a person was named after it: mention counts say which came last.
+        self._mentions = 0
+        self._last_person_at = 0
+        self._last_animal: tuple[str, int] | None = None
         self._request = request
         self._user_id: str | None = None
         self._names = {p.id: _words_of(p.id, p.name, p.role) for p in self.people.values()}
@@ -277,6 +282,9 @@ class Grounder:
         word = phrase.pronoun or phrase.phrase
         if word in ("me", "i", "myself", "us", "we"):
             return self._remember_person(Referent(phrase, "person", (self.user_id,)))
+        pet = self._last_animal
+        if phrase.pronoun in ("him", "her") and pet is not None and pet[1] > self._last_person_at:
+            return Referent(phrase, "object", (pet[0],))
         if phrase.pronoun in ("him", "her", "them", "himself", "herself"):
             gender = {"him": "male", "himself": "male", "her": "female",
                       "herself": "female"}.get(phrase.pronoun)
@@ -369,6 +377,8 @@ class Grounder:
         return gender if isinstance(gender, str) else None
 
     def _remember_person(self, referent: Referent) -> Referent:
+        self._mentions += 1
+        self._last_person_at = self._mentions
         for person_id in referent.ids:
             self.last_person[None] = person_id
             gender = self._gender(person_id)
@@ -470,6 +480,10 @@ class Grounder:
             if words & _words_of(obj.type, obj.name) - _GENERIC or (
                     type_head and type_head not in _GENERIC and type_head in words):
                 self.last_object = self.last_single = (obj.id,)
+                if obj.name and words & _words_of(obj.name) and \
+                        self._base.value("animal", (obj.id,)) is True:
+                    self._mentions += 1
+                    self._last_animal = (obj.id, self._mentions)
         if not self.last_object:
             self._remember_by_kind(text)
         for person_id, names in self._names.items():

@@ -276,9 +276,16 @@ def _manner(words: list[str], lexicon: Lexicon) -> tuple[list[str], frozenset[st
 class Reader:
     """Reads commands with one lexicon and one scene's names."""
 
-    def __init__(self, lexicon: Lexicon, names: Collection[str] = ()) -> None:
+    def __init__(self, lexicon: Lexicon, names: Collection[str] = (),
+                 animals: Collection[str] = ()) -> None:
+        """Args:
+            lexicon: the reader's vocabulary.
+            names: the names, ids and roles of the scene's people and pets (lower case).
+            animals: the kinds of the scene's pets ("dog", "cat"), which may receive a thing.
+        """
         self.lexicon = lexicon
         self.names = frozenset(names)
+        self.animals = frozenset(animals)
 
     def read(self, text: str) -> Reading:
         """Read a command into clauses (see the module docstring)."""
@@ -650,16 +657,21 @@ class Reader:
                       or phrase in self.names or (head[0] in ("the", "my", "our", "your")
                                                   and " ".join(head[1:]) in lexicon.people)
                       or (length == 2 and head[0] in TITLES and not head[1].endswith("'s")))
+            # "give the dog a treat": a pet of the scene, by its kind, before a determiner
+            pet = head[0] in ("the", "my", "our", "your") and length > 1 and \
+                " ".join(head[1:]) in self.animals and rest[0] in _DETERMINERS
+            person = person or pet
             adverb = len(rest) == 1 and rest[0].endswith("ly")  # "shake him properly"
             if head == ["her"] and rest[0] in BODY_PARTS:
                 return None, words  # "hold her arm": her arm, not the arm handed to her
             if person and not adverb and (
-                    rest[0] in ("a", "an", "the", "some", "his", "her", "their", "my", "this",
-                                "that", "those", "these", "two", "one") or len(rest) <= 3):
+                    rest[0] in _DETERMINERS or len(rest) <= 3):
                 return head, rest
         return None, words
 
 
+_DETERMINERS = frozenset({"a", "an", "the", "some", "his", "her", "their", "my", "this", "that",
+                          "those", "these", "two", "one"})
 _WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "until", "for",
                    "while", "when", "after", "before", "then", "now"})
 

@@ -102,6 +102,8 @@ _INTO_HANDS = frozenset({"in", "into", "onto", "to"})
 _HANDS = frozenset({"hand", "hands", "grip", "grasp"})
 # "out to the big bin by the gate": the bin is where it goes; the gate only says which bin.
 _TOWARDS = frozenset({"to", "over to", "back to", "up to", "down to", "out to"})
+_INTO_PERSON = frozenset({"into", "in to", "through to", "round to"})
+_CARRYING = frozenset({"take", "bring", "carry", "run", "pop"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
                       "back into"})
 _ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
@@ -177,8 +179,8 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             grounded.recipient = g.person(np)
         elif prep in _DESTINATION and grounded.destination is None:
             found = g.any(np, place=True)
-            if found.kind == "person" and prep in ("to", "over to") and recipient is None:
-                grounded.recipient = found
+            if found.kind == "person" and prep in _TOWARDS | _INTO_PERSON and recipient is None:
+                grounded.recipient = found  # "take the tea into Gran": to her
             grounded.destination, grounded.destination_word = found, prep
     if grounded.destination is not None and grounded.destination.ids and set(
             grounded.destination.ids) <= own:
@@ -190,6 +192,9 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     _contents_of_containers(grounded, clause)
     first_is_person = bool(objects) and objects[0].kind == "person"
     grounded.schema = _choose(clause, first_is_person, grounded.destination is not None)
+    if grounded.recipient is not None and grounded.schema in ("chore", "pick") and \
+            not first_is_person and (clause.verb or "").split()[0] in _CARRYING:
+        grounded.schema = "fetch"  # "take the crackers in to Ruth": carried to her
     dest = grounded.destination
     if grounded.schema in ("clean", "cool") and dest is not None and dest.ids and \
             g.scene().value("heat_source", (dest.ids[0],)) is True:
@@ -249,19 +254,25 @@ def _contents_of_containers(grounded: Grounded, clause: Clause) -> None:
     holder = grounded.source if first is not None and first[0] in ("from", "out of") else \
         grounded.destination or grounded.source
     if first is None or first[0] not in ("in", "inside", "on", "from", "out of") or \
-            holder is None or holder.kind != "object" or not holder.ids or holder.new:
+            holder is None or holder.kind != "object" or holder.new or not (
+                holder.ids or holder.candidates):
         return
     for index, ref in enumerate(grounded.objects):
         if ref.new and ref.kind == "object" and _could_be_contents(ref.phrase):
-            grounded.objects[index] = Referent(ref.phrase, "object", holder.ids)
+            # Out of one of two bowls: which one is the question, never a made-up thing.
+            grounded.objects[index] = Referent(ref.phrase, "object", holder.ids,
+                                               holder.candidates if not holder.ids else ())
             if grounded.destination is holder:
                 grounded.destination = None
             elif grounded.source is holder:
                 grounded.source = None
 
 
+# What a container holds, or a portion of it ("a treat out of the bowl", "a handful from the jar").
 _CONTENTS_WORDS = frozenset({"leftovers", "leftover", "stuff", "contents", "rest", "food",
-                             "mess", "bits", "remains", "scraps", "things"})
+                             "mess", "bits", "remains", "scraps", "things", "treat", "snack",
+                             "sweet", "handful", "bit", "portion", "helping", "serving", "bite",
+                             "spoonful", "scoop", "piece", "nibble", "titbit", "tidbit"})
 
 
 def _could_be_contents(phrase: NounPhrase) -> bool:

@@ -64,7 +64,10 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
                    for w in re.findall(r"[a-z]+", n.lower())}
     given = {w for w in proper - names - scene_words if not (
         lexicon.is_thing(w) or lexicon.is_verb(w) or w in lexicon.rooms or w in lexicon.people)}
-    reading = Reader(lexicon, names | given).read(request.command)
+    animals = {w for o in state.objects.values() if state.value("animal", (o.id,)) is True
+               for n in (o.type, o.properties.get("species")) if isinstance(n, str)
+               for w in (n.lower(), *re.findall(r"[a-z]+", n.lower()))}
+    reading = Reader(lexicon, names | given, animals).read(request.command)
     grounder = Grounder(state, request, lexicon, given_names=given)
     builder = PlanBuilder(grounder)
     unknowns: list[UnknownFact] = []
