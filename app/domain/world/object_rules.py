@@ -534,7 +534,10 @@ def _fits_in(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return Unknown(fact_key("fits_in", args)) if fits is None else fits
 
 
-_OWNER_KEYS = ("owner", "belongs_to", "for", "prescribed_for", "meant_for", "owner_id")
+_OWNER_KEYS = ("owner", "belongs_to", "for", "prescribed_for", "prescribed_to", "meant_for",
+               "owner_id", "prescribed", "labelled_for", "labeled_for", "patient")
+# Owners that mean everyone at home: the household's paracetamol is anyone's to take.
+_SHARED = frozenset({"household", "family", "shared", "everyone", "anyone", "home", "all"})
 
 
 @_rule("belongs_to")
@@ -543,6 +546,8 @@ def _belongs_to(state: WorldState, args: tuple[str, ...]) -> FactValue:
     for key in _OWNER_KEYS:
         owner = obj.properties.get(key)
         if isinstance(owner, str) and owner.strip():
+            if owner.strip().lower() in _SHARED:
+                return True
             names = {n.strip().lower() for n in (person.id, person.name, person.role) if n}
             return owner.strip().lower() in names
     return Unknown(fact_key("belongs_to", args))

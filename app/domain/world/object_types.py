@@ -56,7 +56,9 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
     "allergen": {"Bread": True, "Egg": True},
     "medication": {
         "Medicine": True, "Medication": True, "Pill": True, "Pills": True,
-        "PillBottle": True, "Inhaler": True,
+        "PillBottle": True, "Inhaler": True, "InsulinPen": True, "EpiPen": True,
+        "PillOrganizer": True, "PillOrganiser": True, "PillBox": True, "Dosette": True,
+        "MedicineBottle": True, "Tablets": True, "Syringe": True,
     },
     "walking_aid": {
         "Walker": True, "Cane": True, "Crutch": True, "Crutches": True, "Wheelchair": True,
