@@ -69,6 +69,7 @@ _EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
 
+_LOCKED = frozenset({"locked", "child-locked", "childproof", "child-proof", "padlocked"})
 _INDEFINITE = frozenset({"everything", "anything", "something", "whatever"})
 
 
@@ -420,7 +421,15 @@ class Grounder:
                     and concept_of(obj.type) == concept and len(concept.types) <= 1) or (
                     self._holds_substance(obj, head)):
                 typed.append(obj.id)
-        return exact or typed
+        found = exact or typed
+        if phrase.contents:
+            # "the cup of tea" when the tea is in a mug (and the cup is empty): the vessel
+            # holding what was named
+            held = singular(phrase.contents.split()[-1])
+            holders = [i for i, o in self.objects.items() if self._holds_substance(o, held)]
+            if holders and not set(holders) & set(found):
+                found = holders
+        return found
 
     def _holds_substance(self, obj: ObjectState, word: str) -> bool:
         contents = obj.facts.get("contents", obj.properties.get("contents"))
@@ -474,16 +483,24 @@ class Grounder:
         """Note what a remark names ("the iron's still on - switch it off"): scene things only,
         never new ones, so a later pronoun can point to them."""
         words = _words_of(text)
+        order = re.findall(r"[a-z]+", text.lower())
+        named: list[tuple[int, str]] = []
         for obj in self.objects.values():
             type_head = singular(_CAMEL.sub(" ", obj.type).split()[-1].lower()) if obj.type \
                 else ""
-            if words & _words_of(obj.type, obj.name) - _GENERIC or (
-                    type_head and type_head not in _GENERIC and type_head in words):
-                self.last_object = self.last_single = (obj.id,)
+            shared = words & _words_of(obj.type, obj.name) - _GENERIC
+            if shared or (type_head and type_head not in _GENERIC and type_head in words):
+                first = min((order.index(w) for w in shared | {type_head} if w in order),
+                            default=len(order))
+                named.append((first, obj.id))
                 if obj.name and words & _words_of(obj.name) and \
                         self._base.value("animal", (obj.id,)) is True:
                     self._mentions += 1
                     self._last_animal = (obj.id, self._mentions)
+        if named:
+            # "The power strip under Dana's desk is sticky... rinse it": the remark's subject,
+            # the thing it names first, is what a later "it" means.
+            self.last_object = self.last_single = (min(named)[1],)
         if not self.last_object:
             self._remember_by_kind(text)
         for person_id, names in self._names.items():
@@ -529,6 +546,8 @@ class Grounder:
             return Referent(phrase, "none")
         liquid = substance_trait(head, "liquid") is True and not phrase.contents
         properties: dict[str, object] = {"contents": phrase.contents} if phrase.contents else {}
+        if _LOCKED & set(phrase.words):
+            properties["locked"] = True  # "the locked cupboard in the art room"
         kind = phrase.phrase
         if liquid:
             # "the water", "some bleach": a cup or bottle of it, which is what a robot carries.
@@ -558,7 +577,8 @@ class Grounder:
             head = singular(words[end - 1])
             named = " ".join(words[:end])
             if (concept_of(named) is not None or type_info(named).known
-                    or substance_trait(head, "food") is not None or self.lexicon.is_thing(head)
+                    or substance_trait(head, "food") is not None
+                    or substance_trait(head, "toxic") is not None or self.lexicon.is_thing(head)
                     or head.endswith("able")):  # "the flammables", "her valuables"
                 return phrase if end == len(words) else replace(
                     phrase, head=words[end - 1], modifiers=words[:end - 1])

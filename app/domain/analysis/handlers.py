@@ -15,7 +15,8 @@ from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
 
 _WET_CLEANING = frozenset({"wash", "rinse", "scrub", "mop up", "wash up", "rinse out", "scour",
-                           "disinfect", "descale", "degrease", "clean out"})
+                           "disinfect", "descale", "degrease", "clean out", "hose", "hose down",
+                           "hose off"})
 
 
 def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
@@ -142,8 +143,9 @@ def _put(builder: PlanBuilder, grounded: Grounded) -> None:
         beside = grounded.beside.id if grounded.beside is not None and \
             grounded.beside.kind == "object" else None
         if grounded.destination_word in NEXT_TO and here == target and \
-                builder.state.value("exit_way", (here,)) is True:
-            # "by the door": on the floor or a surface of its room, beside it, not against it
+                builder.state.entity_type(here) == "object":
+            # "by the door", "beside the heater": on the floor or a surface of its room, beside
+            # it, not on or against it
             here, beside = builder.surface(builder.state.room_of(here), avoid=obj), here
         builder.place(obj, here, relation=builder.relation_for(here), beside=beside)
 

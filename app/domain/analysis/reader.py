@@ -239,8 +239,24 @@ def schemas_go(lexicon: Lexicon, verb: str) -> bool:
     return bool(lexicon.schemas_of(verb)) and lexicon.schemas_of(verb)[0] == "go"
 
 
+_TIMES = re.compile(r"^(?:(?:a )?couple(?: of)?|a few|few|several|two|three|four|five|"
+                    r"\d+|many|a dozen|a number of) times?$")
+
+
+def _without_repetitions(words: list[str]) -> list[str]:
+    """Drop how often ("a couple of times", "twice"): it names no thing."""
+    text = " ".join(words)
+    for size in (4, 3, 2):
+        for start in range(len(words) - size + 1):
+            if _TIMES.match(" ".join(words[start:start + size])):
+                return _without_repetitions(words[:start] + words[start + size:])
+    kept = [w for w in words if w not in ("twice", "thrice")]
+    return kept if kept or not text else words
+
+
 def _without_adverb_pairs(words: list[str]) -> list[str]:
     """Drop two-word adverbs ("upside down", "right away") that name no thing."""
+    words = _without_repetitions(words)
     kept: list[str] = []
     for word in words:
         if kept and (kept[-1], word) in _ADVERB_PAIRS:
@@ -635,6 +651,9 @@ class Reader:
         """ "give the table a wipe" -> ("wipe", ["the", "table"]); "give it a stir"."""
         for index in range(1, len(words) - 1):
             if words[index] in ("a", "an", "another", "the") and len(words) - index <= 4:
+                pair = " ".join(words[-2:])  # "give the mower a hose down"
+                if len(words) - index > 2 and self.lexicon.schemas_of(pair):
+                    return pair, words[:index]
                 noun = words[-1]
                 base = self.lexicon.lemma(noun)
                 if self.lexicon.schemas_of(base) and base not in ("give", "go", "hand"):

@@ -146,6 +146,10 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         grounded.clause = clause
     places = [i for i, (prep, np) in enumerate(clause.roles)
               if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)]
+    if len(places) > 1 and clause.roles[places[-1]][0] in ("in", "inside", "at") and \
+            _names_room(g, clause.roles[places[-1]][1]) and \
+            not _names_room(g, clause.roles[places[-2]][1]):
+        places.pop()  # "beside the heater in the garage": the garage says which heater
     if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
             clause.roles[places[-2]][0] in _SURFACE | _TOWARDS:
         grounded.beside = g.any(clause.roles[places[-1]][1], place=True)
@@ -284,6 +288,13 @@ def _could_be_contents(phrase: NounPhrase) -> bool:
         return False
     return head in _CONTENTS_WORDS or any(
         substance_trait(head, trait) for trait in ("food", "liquid", "medication", "toxic"))
+
+
+def _names_room(g: Grounder, np: NounPhrase) -> bool:
+    """Whether a phrase names a room (a layout room or a room word), without grounding it."""
+    text = np.phrase.replace("'s", "")
+    return text in g.lexicon.rooms or (np.head or "") in g.lexicon.rooms or normalize_type(
+        text) in {normalize_type(r) for r in g.rooms}
 
 
 def _names_person(people: object, np: NounPhrase) -> bool:

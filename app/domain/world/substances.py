@@ -24,6 +24,9 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
         ("oil cooking_oil olive_oil vegetable_oil", "liquid food flammable"),
         ("bleach ammonia detergent dish_soap soap cleaner disinfectant drain_cleaner antifreeze "
          "pesticide acid lye shampoo window_cleaner", "liquid toxic"),
+        # Products named for what they kill or keep away ("ant killer", "slug pellets").
+        ("killer weedkiller insecticide herbicide repellent rodenticide poison pellets "
+         "fungicide", "toxic"),
         ("alcohol rubbing_alcohol ethanol isopropyl gasoline petrol kerosene lighter_fluid "
          "paint_thinner acetone", "liquid toxic flammable"),
         ("peanut peanuts peanut_butter nut nuts almond almonds walnut cashew egg eggs wheat "
