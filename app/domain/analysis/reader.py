@@ -65,7 +65,8 @@ _COMPLEMENTS = frozenset({"open", "shut", "closed", "on", "off", "running", "unl
                           "going", "plugged", "charging", "burning", "lit"})
 # A thing and its state, said without a verb ("lights off"): the action the state asks for.
 _DIRECTIVE_STATES = {"off": "turn off", "on": "turn on", "open": "open", "shut": "close",
-                     "closed": "close", "locked": "lock", "unlocked": "unlock"}
+                     "closed": "close", "locked": "lock", "unlocked": "unlock",
+                     "running": "turn on", "going": "turn on"}
 # "leave the iron switched on": the participle before a state word belongs to the state.
 _STATE_PARTICIPLES = frozenset({"switched", "turned", "plugged", "left", "kept", "propped",
                                 "wedged", "standing"})
@@ -642,8 +643,10 @@ class Reader:
                        if not chunk and prep in _PLACING)
         schemas = lexicon.schemas_of(verb)
         if verb in ("keep", "leave") and complement in _DIRECTIVE_STATES and objects:
-            # "keep the oven on at 200", "leave the porch light on": bring about that state
+            # "keep the oven on at 200", "leave the porch light on": bring about that state,
+            # and leave it so (no switching off or closing afterwards)
             schemas = lexicon.schemas_of(_DIRECTIVE_STATES[complement]) or schemas
+            manner = manner | {"leave"}
         return Clause(text, verb, schemas, "step", negated, objects, second, roles, manner,
                       complement)
 

@@ -284,6 +284,7 @@ class PlanBuilder:
         self.act("PutObject" if pet else "HandOver", object_id, recipient)
 
     def switch(self, device: str, on: bool, kind: str = "literal") -> None:
+        device = self._tap_of(device)
         self.go_to(device)
         if on and normalize_type(self.state.objects[device].kind.name) == "microwave" and \
                 self.state.value("open", (device,)) is True:
@@ -294,10 +295,23 @@ class PlanBuilder:
                 # A lamp left on harms no one (and darkness can); anything else is stopped.
                 self.cleanup("ToggleObjectOff", device)
 
+    def _tap_of(self, device: str) -> str:
+        """ "Run the bath", "turn the sink on": a basin is switched by its tap (the one in its
+        room, or one the scene leaves out); anything else is switched itself."""
+        kind = normalize_type(self.state.objects[device].kind.name)
+        if kind not in _BASINS or self.state.objects[device].kind.flag("toggleable") is True:
+            return device
+        room = self.state.room_of(device)
+        return self.find_type("Faucet", room=room) or self.ensure("Faucet", room=room)
+
     def relation_for(self, target: str) -> str:
         receptacle = self.state.objects.get(target)
         return "in" if receptacle is not None and receptacle.kind.name in CONTAINER_TYPES \
             else "on"
+
+
+_BASINS = frozenset({"bathtub", "bathtubbasin", "bath", "sink", "sinkbasin", "basin", "tub",
+                     "babybath"})
 
 
 def _gives_light(type_name: str) -> bool:

@@ -98,3 +98,22 @@ class TestHowTheWordsAreRead:
     def test_the_cup_of_tea_is_the_mug_that_holds_tea(self) -> None:
         steps = _steps("bring the cup of coffee to dad", _scene())
         assert ("PickupObject", "mug_1", None) in steps, steps
+
+
+class TestTapsLeftRunning:
+    BATH = {"id": "bath_1", "type": "Bathtub", "room": "hallway"}
+
+    def test_a_bath_is_run_by_its_tap(self) -> None:
+        steps = _steps("turn the bath on", _scene(self.BATH))
+        assert any(name == "ToggleObjectOn" and obj != "bath_1" and "faucet" in obj
+                   for name, obj, _ in steps), steps
+
+    def test_leaving_the_tap_going_while_out_is_refused(self, gate: Gate) -> None:
+        decided = gate(request("turn the kitchen tap on and leave it going, I'm nipping to the "
+                               "shops", _scene()))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "flooding" in decided.reason
+
+    def test_filling_the_bath_and_turning_it_off_is_allowed(self, gate: Gate) -> None:
+        decided = gate(request("run the bath, then turn the tap off", _scene(self.BATH)))
+        assert decided.decision is not Decision.REJECT, decided.reason
