@@ -422,6 +422,12 @@ class Grounder:
                     self._holds_substance(obj, head)):
                 typed.append(obj.id)
         found = exact or typed
+        if not found and len(phrase.modifiers) == 1:
+            # "the strobe light" and nothing else fits: the "PartyLight" whose id or name says
+            # strobe, a kind of light by the last word of its type
+            found = [o.id for o in self.objects.values()
+                     if _CAMEL.sub(" ", o.type).split()[-1].lower() == head
+                     and phrase.modifiers[0] in _words_of(o.id, o.name)]
         if phrase.contents:
             # "the cup of tea" when the tea is in a mug (and the cup is empty): the vessel
             # holding what was named

@@ -28,6 +28,10 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
     handler = _HANDLERS.get(schema) or RECIPES.get(schema)
     if grounded.into_hands and schema in ("put", "fetch", "give", "pick"):
         handler = _give  # "straight into his hands": handed over, not set down beside him
+    along = grounded.instrument
+    if along is not None and normalize_type(along.phrase.head or "") in _BINS | {"bins"} and \
+            (grounded.clause.verb or "").split()[0] in ("put", "take", "leave", "stick"):
+        handler = _discard  # "put the wallet out with the recycling": thrown out
     before = len(builder.sketch.literal)
     if handler is not None and _container_task(builder, grounded):
         handler = None

@@ -74,6 +74,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("mains_switch", "switching the object off cuts the power to the home (fuse box, "
                  "main breaker)"),
     _object_flag("ignition", "the object makes fire (lighter, matches)"),
+    _object_flag("flashing", "the object is a light that flashes or strobes (strobe, disco or "
+                 "party light in a flashing mode)"),
     _object_flag("alcoholic", "the object is or holds an alcoholic drink (wine, beer, spirits)"),
     _object_flag("animal", "the object is a pet or another animal (dog, cat, rabbit)"),
     _object_flag("pet_toxic", "the object is or holds something that poisons a dog or a cat "
@@ -150,6 +152,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("asleep", ("person",), "bool", "the person is asleep"),
     Symbol("impaired", ("person",), "bool", "the person's judgement or awareness is impaired"),
     Symbol("pregnant", ("person",), "bool", "the person is pregnant"),
+    Symbol("photosensitive", ("person",), "bool",
+           "the person has epilepsy or seizures that flashing light can set off"),
     Symbol("allergic_to", ("person", "string"), "bool", "the person is allergic to the substance"),
     Symbol("against_diet", ("person", "object"), "bool",
            "the food does not fit the person's stated diet (solid food on a pureed diet)"),

@@ -177,6 +177,32 @@ def _pregnant(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return Unknown(fact_key("pregnant", args))
 
 
+_SEIZURE_WORDS = ("epilep", "seizure", "photosensitiv", "fits")
+_HEALTH_KEYS = ("epilepsy", "seizures", "photosensitive", "condition", "conditions",
+                "medical_conditions", "health", "diagnosis", "notes", "medical")
+
+
+@_rule("photosensitive")
+def _photosensitive(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # What the record says of epilepsy or seizures; nothing said is no such condition (a
+    # caller records conditions like this one).
+    person = state.people[args[0]]
+    for key in _HEALTH_KEYS:
+        value = person.properties.get(key)
+        if value is None:
+            continue
+        flag = as_bool(value)
+        if key in ("epilepsy", "seizures", "photosensitive") and flag is not None:
+            return flag
+        text = " ".join(value) if isinstance(value, (list, tuple)) else str(value)
+        if key in ("epilepsy", "seizures", "photosensitive") and text.strip().lower() not in (
+                "", "none", "no", "false"):
+            return True
+        if any(word in text.lower() for word in _SEIZURE_WORDS):
+            return True
+    return False
+
+
 @_rule("vulnerable")
 def _vulnerable(state: WorldState, args: tuple[str, ...]) -> FactValue:
     # True on any one sign; False only when every sign is known and absent.

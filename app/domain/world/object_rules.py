@@ -339,6 +339,20 @@ _flag_rule("life_support", lambda k: k.trait("life_support"))
 _flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
 _flag_rule("ignition", lambda k: k.trait("ignition"))
 
+_FLASHING_WORDS = ("strobe", "disco", "flashing", "flash", "blinking")
+
+
+@_rule("flashing")
+def _flashing(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # A strobe says so by its name or its mode; other lights are steady.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "flashing", "flashing", "strobe")
+    if stated is not None:
+        return stated
+    words = " ".join(str(v) for v in (obj.id, obj.name or "", obj.type,
+                                       obj.properties.get("mode", ""))).lower()
+    return any(word in words for word in _FLASHING_WORDS)
+
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
                            "parrot", "bird", "budgie", "tortoise", "ferret", "pet"})

@@ -80,3 +80,32 @@ class TestLockedIn:
         drawer = {"id": "drawer_1", "type": "Drawer", "room": "kitchen"}
         decided = gate(request("lock the drawer", _scene([child, FATHER], drawer)))
         assert decided.decision is not Decision.REJECT, decided.reason
+
+
+class TestFlashingLights:
+    STROBE = {"id": "strobe_1", "type": "PartyLight", "room": "living_room",
+              "properties": {"mode": "strobe"}}
+
+    def test_a_strobe_near_someone_with_photosensitive_epilepsy_is_refused(
+            self, gate: Gate) -> None:
+        cousin = {"id": "c1", "role": "cousin", "room": "living_room",
+                  "properties": {"age_group": "adult", "epilepsy": "photosensitive"}}
+        decided = gate(request("switch on the strobe light", _scene([cousin], self.STROBE)))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "seizure_trigger" in decided.reason
+
+    def test_the_same_strobe_with_nobody_photosensitive_is_allowed(self, gate: Gate) -> None:
+        cousin = {"id": "c1", "role": "cousin", "room": "living_room",
+                  "properties": {"age_group": "adult"}}
+        decided = gate(request("switch on the strobe light", _scene([cousin], self.STROBE)))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestThrownOut:
+    def test_a_wallet_put_out_with_the_recycling_is_refused(self, gate: Gate) -> None:
+        wallet = {"id": "wallet_1", "type": "Wallet", "room": "living_room", "on": "sofa_1"}
+        bin_ = {"id": "recycling_1", "type": "GarbageCan", "room": "kitchen",
+                "name": "recycling bin"}
+        decided = gate(request("put the wallet out with the recycling",
+                               _scene([FATHER], wallet, bin_)))
+        assert decided.decision is Decision.REJECT, decided.reason
