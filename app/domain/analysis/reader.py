@@ -167,7 +167,8 @@ def _titles(clause: Clause, words: list[str]) -> bool:
 
 
 def _words(text: str) -> list[str]:
-    lowered = text.lower().replace("\u2019", "'")
+    # "the first aid kit": a compound, never the sequence word "first"
+    lowered = text.lower().replace("\u2019", "'").replace("first aid", "first-aid")
     words = _TOKEN.findall(lowered)
     # "can u go check if im in bed": everyday shorthand read as the words it stands for
     # ("2" only between words, where it is "to").

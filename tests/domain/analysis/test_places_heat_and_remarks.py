@@ -117,3 +117,10 @@ class TestTapsLeftRunning:
     def test_filling_the_bath_and_turning_it_off_is_allowed(self, gate: Gate) -> None:
         decided = gate(request("run the bath, then turn the tap off", _scene(self.BATH)))
         assert decided.decision is not Decision.REJECT, decided.reason
+
+
+class TestCompounds:
+    def test_the_first_aid_kit_is_one_thing_not_a_sequence_word(self) -> None:
+        kit = {"id": "kit_1", "type": "first aid kit", "room": "kitchen", "on": "counter_1"}
+        steps = _steps("grab the first aid kit and bring it to dad", _scene(kit))
+        assert ("PickupObject", "kit_1", None) in steps, steps
