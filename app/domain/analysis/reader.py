@@ -43,7 +43,7 @@ _ADVERB_PAIRS = frozenset({("upside", "down"), ("inside", "out"), ("right", "awa
                            ("handle", "first"), ("handle-first", "first"),
                            ("straight", "away"), ("right", "now"), ("for", "now"),
                            ("at", "once"), ("as", "usual"), ("face", "down"),
-                           ("face", "up"), ("face", "first")})
+                           ("face", "up"), ("face", "first"), ("as", "is")})
 _STRAY = frozenset({"handle-first", "blade-first", "point-first", "pls", "plz", "please",
                     "thanks", "thx", "ty", "cheers", "lol", "haha", "ugh", "hey", "oh", "ok",
                     "okay", "btw", "asap"})
@@ -256,9 +256,16 @@ def _without_repetitions(words: list[str]) -> list[str]:
     return kept if kept or not text else words
 
 
+_AS_IT_IS = frozenset({("as", "it", "is"), ("as", "they", "are"), ("as", "it", "comes")})
+
+
 def _without_adverb_pairs(words: list[str]) -> list[str]:
     """Drop two-word adverbs ("upside down", "right away") that name no thing."""
     words = _without_repetitions(words)
+    for start in range(len(words) - 2):
+        if tuple(words[start:start + 3]) in _AS_IT_IS:  # "in the oven as it is"
+            words = words[:start] + words[start + 3:]
+            break
     kept: list[str] = []
     for word in words:
         if kept and (kept[-1], word) in _ADVERB_PAIRS:

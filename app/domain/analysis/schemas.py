@@ -17,7 +17,7 @@ from app.domain.analysis.phrases import NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.concepts import concept_of, singular
-from app.domain.world.object_types import normalize_type
+from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
 from app.domain.world.substances import substance_trait
 
 PERSON_SCHEMAS = frozenset({"escort", "assist", "follow", "feed", "harm", "frighten",
@@ -102,6 +102,7 @@ _INTO_HANDS = frozenset({"in", "into", "onto", "to"})
 _HANDS = frozenset({"hand", "hands", "grip", "grasp"})
 # "out to the big bin by the gate": the bin is where it goes; the gate only says which bin.
 _TOWARDS = frozenset({"to", "over to", "back to", "up to", "down to", "out to"})
+_INTO_CONTAINERS = frozenset(normalize_type(t) for t in CONTAINER_TYPES)
 _INTO_PERSON = frozenset({"into", "in to", "through to", "round to"})
 _CARRYING = frozenset({"take", "bring", "carry", "run", "pop"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
@@ -196,6 +197,11 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     _contents_of_containers(grounded, clause)
     first_is_person = bool(objects) and objects[0].kind == "person"
     grounded.schema = _choose(clause, first_is_person, grounded.destination is not None)
+    dest = grounded.destination
+    if grounded.schema == "push" and dest is not None and dest.kind == "object" and dest.ids \
+            and grounded.destination_word in ("in", "into", "inside") and \
+            normalize_type(g.objects[dest.ids[0]].kind.name) in _INTO_CONTAINERS:
+        grounded.schema = "put"  # "shove the box in the oven": put in it, not pushed at it
     if grounded.recipient is not None and grounded.schema in ("chore", "pick") and \
             not first_is_person and (clause.verb or "").split()[0] in _CARRYING:
         grounded.schema = "fetch"  # "take the crackers in to Ruth": carried to her

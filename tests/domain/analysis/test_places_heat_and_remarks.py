@@ -124,3 +124,9 @@ class TestCompounds:
         kit = {"id": "kit_1", "type": "first aid kit", "room": "kitchen", "on": "counter_1"}
         steps = _steps("grab the first aid kit and bring it to dad", _scene(kit))
         assert ("PickupObject", "kit_1", None) in steps, steps
+
+    def test_shoving_a_box_into_the_oven_as_it_is_puts_it_in(self) -> None:
+        oven = {"id": "oven_1", "type": "Oven", "room": "kitchen", "properties": {"on": False}}
+        box = {"id": "box_1", "type": "PizzaBox", "room": "kitchen", "on": "counter_1"}
+        steps = _steps("shove the pizza box in the oven as it is", _scene(oven, box))
+        assert ("PutObject", "box_1", "oven_1") in steps, steps
