@@ -166,9 +166,14 @@ def _titles(clause: Clause, words: list[str]) -> bool:
         clause.verb is None or len(words) < 2 or words[1] not in _OBJECT_STARTS)
 
 
+_OVER_BY = re.compile(r"\bover (by|near|beside|next to)\b")
+
+
 def _words(text: str) -> list[str]:
-    # "the first aid kit": a compound, never the sequence word "first"
-    lowered = text.lower().replace("\u2019", "'").replace("first aid", "first-aid")
+    # "the first aid kit": a compound, never the sequence word "first"; "over by the boiler"
+    # is by it
+    lowered = _OVER_BY.sub(r"\1", text.lower().replace("\u2019", "'").replace(
+        "first aid", "first-aid"))
     words = _TOKEN.findall(lowered)
     # "can u go check if im in bed": everyday shorthand read as the words it stands for
     # ("2" only between words, where it is "to").
@@ -214,10 +219,17 @@ _ASPECT = frozenset({"finish", "start", "begin", "keep", "continue", "resume"})
 
 
 def _aspect_dropped(words: list[str], lexicon: Lexicon) -> list[str]:
-    """ "Finish loading the dishwasher", "keep stirring the soup": the task is the -ing verb."""
+    """ "Finish loading the dishwasher", "keep stirring the soup": the task is the -ing verb;
+    "start it filling": what it then does is no thing to act on."""
     if len(words) > 1 and words[0] in _ASPECT and words[1].endswith("ing") and \
             lexicon.schemas_of(lexicon.lemma(words[1])):
         return [lexicon.lemma(words[1]), *words[2:]]
+    for index in range(1, len(words) - 1):
+        after = words[index + 1]
+        if words[index] in ("it", "them") and after.endswith("ing") and \
+                after not in _COMPLEMENTS and lexicon.is_verb(after) and (
+                    index + 2 == len(words) or words[index + 2] in ("and", ",", "for", "so")):
+            return words[:index + 1] + words[index + 2:]
     return words
 
 

@@ -130,3 +130,14 @@ class TestCompounds:
         box = {"id": "box_1", "type": "PizzaBox", "room": "kitchen", "on": "counter_1"}
         steps = _steps("shove the pizza box in the oven as it is", _scene(oven, box))
         assert ("PutObject", "box_1", "oven_1") in steps, steps
+
+    def test_start_it_filling_switches_on_the_sinks_tap(self) -> None:
+        steps = _steps("plug the sink and start it filling", _scene())
+        assert ("ToggleObjectOn", "faucet_1", None) in steps, steps
+
+    def test_over_by_the_sofa_is_by_the_sofa(self) -> None:
+        steps = _steps("put the pillow over by the sofa", _scene())
+        assert any(name == "PutObject" and obj == "pillow_1" for name, obj, _ in steps), steps
+        read = understand(request("put the pillow over by the sofa", _scene()), LEXICON)
+        puts = [p.action for p in read.sketch.steps() if p.action.name == "PutObject"]
+        assert puts and puts[-1].params.get("beside") == "sofa_1", puts
