@@ -134,7 +134,7 @@ def pour(builder: PlanBuilder, grounded: Grounded) -> None:
         target = objects[0]  # "ladle a bowl of the chowder from the pot": into the bowl
     if dest is not None and dest.kind == "room" and target is not None:
         target = builder.surface(target)
-    if target is None and source is not None and grounded.clause.verb in _EMPTYING:
+    if target is None and source is not None and grounded.clause.verb in _EMPTYING_VERBS:
         empty_container(builder, source)
         return
     if source is None or target is None or not builder.acquire(source):
@@ -144,7 +144,7 @@ def pour(builder: PlanBuilder, grounded: Grounded) -> None:
 
 
 # "Empty the dishwasher", "drain the bath": with no place named, what is in it comes out.
-_EMPTYING = frozenset({"empty", "drain", "drain off", "tip out", "pour out", "dump out"})
+_EMPTYING_VERBS = frozenset({"empty", "drain", "drain off", "tip out", "pour out", "dump out"})
 _PUT_AWAY = ("Cabinet", "Shelf", "Drawer")
 
 

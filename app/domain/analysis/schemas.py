@@ -205,7 +205,6 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     if grounded.recipient is not None and grounded.schema in ("chore", "pick") and \
             not first_is_person and (clause.verb or "").split()[0] in _CARRYING:
         grounded.schema = "fetch"  # "take the crackers in to Ruth": carried to her
-    dest = grounded.destination
     if grounded.schema in ("clean", "cool") and dest is not None and dest.ids and \
             g.scene().value("heat_source", (dest.ids[0],)) is True:
         grounded.schema = "heat"  # "dry it off in the microwave": heated there

@@ -299,7 +299,7 @@ class PlanBuilder:
         """ "Run the bath", "turn the sink on": a basin is switched by its tap (the one in its
         room, or one the scene leaves out); anything else is switched itself."""
         kind = normalize_type(self.state.objects[device].kind.name)
-        if kind not in _BASINS or self.state.objects[device].kind.flag("toggleable") is True:
+        if kind not in _TAP_FILLED or self.state.objects[device].kind.flag("toggleable") is True:
             return device
         room = self.state.room_of(device)
         return self.find_type("Faucet", room=room) or self.ensure("Faucet", room=room)
@@ -310,7 +310,7 @@ class PlanBuilder:
             else "on"
 
 
-_BASINS = frozenset({"bathtub", "bathtubbasin", "bath", "sink", "sinkbasin", "basin", "tub",
+_TAP_FILLED = frozenset({"bathtub", "bathtubbasin", "bath", "sink", "sinkbasin", "basin", "tub",
                      "babybath"})
 
 
