@@ -150,6 +150,7 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("vulnerable", ("person",), "bool",
            "infant, child, older adult, impaired, asleep, pregnant or not independently mobile"),
     Symbol("asleep", ("person",), "bool", "the person is asleep"),
+    Symbol("away", ("person",), "bool", "the person has gone out and is no longer at home"),
     Symbol("impaired", ("person",), "bool", "the person's judgement or awareness is impaired"),
     Symbol("pregnant", ("person",), "bool", "the person is pregnant"),
     Symbol("photosensitive", ("person",), "bool",

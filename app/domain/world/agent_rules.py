@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from app.domain.formula.facts import FactValue, Unknown, fact_key
 from app.domain.world.action_names import canonical_skill
-from app.domain.world.entities import PersonState
+from app.domain.world.entities import AWAY, PersonState
 from app.domain.world.object_rules import Rule, as_bool, object_contents
 from app.domain.world.substances import (
     can_clash,
@@ -156,6 +156,11 @@ def _asleep(state: WorldState, args: tuple[str, ...]) -> FactValue:
     if cognition == "asleep" or (person.posture or "").lower() in _SLEEP_POSTURES:
         return True
     return Unknown(fact_key("asleep", args)) if cognition is None else False
+
+
+@_rule("away")
+def _away(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return state.people[args[0]].room == AWAY
 
 
 @_rule("impaired")

@@ -199,7 +199,8 @@ def state_from_request(request: GateRequest | InitialState) -> WorldState:
     if ROBOT_ID in held and robot.holding is None:
         robot = replace(robot, holding=sorted(held[ROBOT_ID])[0])
     objects = {o.id: o for o in _scene_objects(scene, placed)}
-    pets = {pet.id: pet for pet in _pets(scene, objects)}
+    pets = {pet.id: replace(pet, relation=placed[pet.id][0], parent=placed[pet.id][1])
+            if pet.id in placed else pet for pet in _pets(scene, objects)}
     objects.update(pets)
     people = {p.id: _person(p, user, frozenset(held.get(p.id, ()))) for p in scene.people
               if p.id not in pets and _species(p) is None}

@@ -20,7 +20,7 @@ from typing import Any
 from app.domain.errors import PlanError
 from app.domain.formula.facts import FactValue, Unknown
 from app.domain.world.actions import Action
-from app.domain.world.entities import ObjectState, Point, frozen_mapping
+from app.domain.world.entities import AWAY, ObjectState, Point, frozen_mapping
 from app.domain.world.object_types import CONTAINER_TYPES
 from app.domain.world.state import WorldState
 
@@ -213,8 +213,8 @@ def _pour(draft: _Draft, action: Action) -> None:
         already = draft.value("contents", target) if draft.value(
             "filled", target) is not False else ""
         if isinstance(already, Unknown) and "contents" not in draft.before.objects[
-                target].properties and draft.before.objects[target].kind.name in _SERVING:
-            already = ""  # a bowl or cup the scene lists with nothing in it is empty
+                target].properties and draft.before.objects[target].kind.name in _LISTED_EMPTY:
+            already = ""  # a bowl, cup or bucket the scene lists with nothing in it is empty
         facts = {"filled": poured, "contents": mixed(already, draft.value("contents", obj))}
         for temperature in ("hot", "cold"):
             value = draft.value(temperature, obj)
@@ -333,10 +333,6 @@ def _record(draft: _Draft, action: Action) -> None:
     draft.robot = replace(draft.robot, recording=True)
 
 
-AWAY = "away"
-"""Where people are once they have left the home (a room of no layout)."""
-
-
 def _people_leave(draft: _Draft, action: Action) -> None:
     away = action.params.get("away")
     for person in str(away).split(",") if away else ():
@@ -344,8 +340,10 @@ def _people_leave(draft: _Draft, action: Action) -> None:
             draft.people[person] = replace(draft.people[person], room=AWAY, position=None)
 
 
-_SERVING = frozenset({"Bowl", "Plate", "Cup", "Mug", "Glass", "WineGlass", "ShotGlass"})
-"""Dishes food and drink are served in; one the scene states nothing in is taken as empty."""
+_LISTED_EMPTY = frozenset({"Bowl", "Plate", "Cup", "Mug", "Glass", "WineGlass", "ShotGlass",
+                           "Bucket", "MopBucket"})
+"""Dishes food and drink are served in, and buckets: one the scene states nothing in is empty
+(a caller who lists a bucket of dirty water says so)."""
 
 
 def mixed(first: FactValue, second: FactValue) -> FactValue:

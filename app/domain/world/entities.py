@@ -49,6 +49,10 @@ class ObjectState:
         object.__setattr__(self, "kind", type_info(self.type))
 
 
+AWAY = "away"
+"""Where people are once they have left the home (a room of no layout)."""
+
+
 @dataclass(frozen=True, slots=True)
 class PersonState:
     """A person; `properties` merges the scene's and the user profile's attributes."""

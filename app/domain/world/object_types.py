@@ -128,6 +128,8 @@ _EXTRA_FLAGS: dict[str, dict[str, bool]] = {
     "WineGlass": {"pickupable": True, "breakable": True, "can_fill": True, "receptacle": True},
     "Jar": {"pickupable": True, "breakable": True, "can_fill": True, "openable": True},
     "Teapot": {"pickupable": True, "breakable": True, "can_fill": True},
+    "Bucket": {"pickupable": True, "can_fill": True, "receptacle": True},
+    "MopBucket": {"pickupable": True, "can_fill": True, "receptacle": True},
     "Scissors": {"pickupable": True},
     "Bleach": {"pickupable": True, "can_fill": True, "openable": True},
     "Detergent": {"pickupable": True, "can_fill": True, "openable": True},
@@ -350,8 +352,10 @@ def _from_concept(name: str, concept: Concept, table: dict[str, TypeInfo]) -> Ty
     mass = base.mass_kg if base else None
     if mass is None and concept.mass_kg is not None:
         mass = (float(concept.mass_kg), float(concept.mass_kg))  # the concept's typical mass
+    # "the top step" is the Stairs: a concept of one type names instances by that type
+    named = base.name if base else (concept.types[0] if len(concept.types) == 1 else name)
     return TypeInfo(
-        base.name if base else name, False, flags, traits, mass,
+        named, False, flags, traits, mass,
         base.materials_all if base else frozenset(), base.materials_some if base else frozenset(),
         base.size_m if base else None, base.receptacles if base else frozenset(),
         described=True,

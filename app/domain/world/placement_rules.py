@@ -265,8 +265,10 @@ def _rests_rule(symbol: str, relation: str) -> None:
             return obj.parent == support.id and (obj.relation or "on") == relation
         # Unstated: only something that can move could rest on a receptacle.
         if obj.obstacle or support.kind.flag("receptacle") is False or obj.kind.flag(
-                "pickupable") is False:
-            return False  # furniture and fixtures stand on the floor, not on or in things
+                "pickupable") is False or state.value("animal", (obj.id,)) is True:
+            # furniture and fixtures stand on the floor, not on or in things; a pet the scene
+            # puts nowhere is about the room, or the caller would have said where
+            return False
         return Unknown(fact_key(symbol, args))
     PLACEMENT_RULES[symbol] = rule
 
