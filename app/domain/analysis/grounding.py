@@ -245,7 +245,7 @@ class Grounder:
         if person is not None:
             return person
         if phrase.head and (self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
-                phrase.head)):
+                phrase.head)) and not self._names_a_product(phrase):
             return self._new_person(phrase)
         room = self.room(phrase)
         named_room = phrase.phrase in self.lexicon.rooms and self.lexicon.rooms[
@@ -307,7 +307,7 @@ class Grounder:
             return None
         wanted = _words_of(phrase.phrase)
         matches = [pid for pid, names in self._names.items() if wanted and wanted <= names]
-        if not matches:
+        if not matches and not self._names_a_product(phrase):
             matches = [pid for pid, names in self._names.items() if phrase.head in names
                        or singular(phrase.head) in names]
         if not matches:
@@ -317,7 +317,7 @@ class Grounder:
                 return self._titled(phrase)
             if info is None and phrase.phrase in self._given_names:
                 return self._unnamed(phrase, gender=None, kin=True)
-            if info is None or info.is_user:
+            if info is None or info.is_user or self._names_a_product(phrase):
                 return None
             matches = [p.id for p in self.people.values() if info.age_group
                        and p.properties.get("age_group") == info.age_group
@@ -334,6 +334,14 @@ class Grounder:
         if titled is not None and len(ids) == 1:
             self.last_person[titled] = ids[0]  # "Mrs Ade ... her arm": the title says who
         return self._remember_person(Referent(phrase, "person", ids))
+
+    def _names_a_product(self, phrase: NounPhrase) -> bool:
+        """A qualified role word that a scene object answers to is that object: "the ammonia
+        cleaner" is the bottle that holds it, not a cleaner by trade."""
+        wanted = set(phrase.modifiers)
+        return bool(wanted) and any(
+            wanted <= _words_of(o.id, o.name, o.type, str(o.properties.get("contents") or ""))
+            for o in map(self.objects.__getitem__, self._object_matches(phrase)))
 
     def _same_kind(self, role: str | None, wanted: PersonWord) -> bool:
         """Whether a scene role is another word for the same kind of person ("grandad" and

@@ -640,6 +640,11 @@ class Reader:
                     w for w in chunks[1][1] if w != ","]:
             object_words.pop()  # "the iron switched on, on the board": "on" then a place
             complement = chunks.pop(1)[0]
+        setting = next((i for i, (prep, chunk) in enumerate(chunks[1:], 1) if prep == "on"
+                        and chunk and _is_setting(chunk[0])), None)
+        if setting is not None and complement is None:
+            # "leave the oven on low", "put the heater on full": a setting, not a place
+            complement = chunks.pop(setting)[0]
         second: NounPhrase | None = None
         objects_words = split_conjoined(object_words)
         carries = {"fetch", "give", "pick"} & set(lexicon.schemas_of(verb)) and "make" not in \
@@ -662,6 +667,10 @@ class Reader:
         roles += tuple((prep, NounPhrase("", pronoun="it")) for prep, chunk in chunks[1:]
                        if not chunk and prep in _PLACING)
         schemas = lexicon.schemas_of(verb)
+        if (setting is not None or complement in ("going", "running")) and \
+                verb in _SETTING_VERBS and objects:
+            # "set the dryer going", "put the heater on full": switched on
+            schemas = lexicon.schemas_of("turn on") or schemas
         if verb in ("keep", "leave") and complement in _DIRECTIVE_STATES and objects:
             # "keep the oven on at 200", "leave the porch light on": bring about that state,
             # and leave it so (no switching off or closing afterwards)
@@ -678,7 +687,7 @@ class Reader:
                 if len(words) - index > 2 and self.lexicon.schemas_of(pair):
                     return pair, words[:index]
                 noun = words[-1]
-                base = self.lexicon.lemma(noun)
+                base = _ACTION_NOUNS.get(noun) or self.lexicon.lemma(noun)
                 if self.lexicon.schemas_of(base) and base not in ("give", "go", "hand"):
                     return base, words[:index]
         return None
@@ -716,6 +725,17 @@ _DETERMINERS = frozenset({"a", "an", "the", "some", "his", "her", "their", "my",
                           "those", "these", "two", "one"})
 _WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "until", "for",
                    "while", "when", "after", "before", "then", "now"})
+
+
+# Nouns for an action that no verb spells ("give the rug a going-over").
+_ACTION_NOUNS = {"going-over": "clean", "once-over": "clean", "spruce": "clean",
+                 "tidy-up": "tidy", "wipe-down": "wipe"}
+_SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
+
+
+def _is_setting(word: str) -> bool:
+    """A word naming how high an appliance is set ("low", "full", "180")."""
+    return word in _SETTINGS or (word.isdigit() and int(word) >= 50)
 
 
 def _kept_state(words: list[str]) -> tuple[list[str], str | None]:

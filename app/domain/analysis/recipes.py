@@ -17,6 +17,7 @@ from app.domain.world.object_types import normalize_type
 from app.domain.world.substances import substance_trait
 
 if TYPE_CHECKING:
+    from app.domain.analysis.grounding import Referent
     from app.domain.analysis.schemas import Grounded
     from app.domain.analysis.steps import PlanBuilder
 
@@ -193,6 +194,9 @@ def fill(builder: PlanBuilder, grounded: Grounded) -> None:
     from the container holding it for anything else."""
     tool = grounded.instrument
     source = grounded.source
+    if source is None and tool is not None and tool.kind == "object" and tool.id is not None \
+            and not tool.new and builder.state.value("filled", (tool.id,)) is True:
+        source = tool  # "top up the spray with the bleach": poured from the bleach bottle
     if source is not None and source.kind == "object" and source.id is not None:
         for obj in _objects(grounded):  # "top up the glass from the bottle": pour from it
             if obj != source.id and builder.acquire(source.id):
@@ -235,22 +239,28 @@ def water(builder: PlanBuilder, grounded: Grounded) -> None:
 
 
 def mix(builder: PlanBuilder, grounded: Grounded) -> None:
-    """Add one thing to another ("mix the bleach with the ammonia", "add salt to the soup")."""
+    """Add one thing to another: everything named goes into the place named ("mix the bleach
+    with the ammonia in the bucket"); with no place, the thing it is mixed with goes into the
+    thing named ("mix the bleach with the ammonia"), or each thing into the next."""
     objects = _objects(grounded)
-    other = [r for r in (grounded.instrument, grounded.destination) if r is not None
-             and r.kind == "object" and r.id]
-    pairs = list(itertools.pairwise(objects))
-    if other and objects:
-        first, second = objects[0], other[0].id or ""
-        pairs = [(second, first)] if grounded.instrument is not None else [(first, second)]
-    for added, into in pairs:
-        liquid = builder.state.value("filled", (added,)) is not False and \
-            builder.state.objects[added].kind.flag("can_fill") is not False
-        if liquid and builder.acquire(added):
-            builder.go_to(into)
-            builder.act("Pour", added, into)
+
+    def object_of(ref: Referent | None) -> str | None:
+        return ref.id if ref is not None and ref.kind == "object" and ref.id else None
+
+    into, added = object_of(grounded.destination), object_of(grounded.instrument)
+    if into is not None:
+        pairs = [(thing, into) for thing in [*objects, *([added] if added else [])]
+                 if thing != into]
+    elif added is not None and objects:
+        pairs = [(added, objects[0])]
+    else:
+        pairs = list(itertools.pairwise(objects))
+    for thing, vessel in pairs:
+        if builder.state.value("filled", (thing,)) is True and builder.acquire(thing):
+            builder.go_to(vessel)
+            builder.act("Pour", thing, vessel)
         else:
-            builder.place(added, into, relation="in")
+            builder.place(thing, vessel, relation="in")
     if not pairs:
         for obj in objects:
             builder.go_to(obj)

@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from app.domain.analysis.grounding import Grounder, Referent
-from app.domain.analysis.phrases import NounPhrase
+from app.domain.analysis.phrases import BODY_PARTS, NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.concepts import concept_of, singular
@@ -183,7 +183,9 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         elif prep == "for" and recipient is None and _names_person(g.lexicon.people, np):
             grounded.recipient = g.person(np)
         elif prep in _DESTINATION and grounded.destination is None:
-            found = g.any(np, place=True)
+            # "spray it in Dave's face": aimed at Dave; "by her feet" stays a place beside her
+            aimed = np.head in BODY_PARTS and bool(np.possessor) and prep not in _BESIDE
+            found = g.any(np, place=not aimed)
             if found.kind == "person" and prep in _TOWARDS | _INTO_PERSON and recipient is None:
                 grounded.recipient = found  # "take the tea into Gran": to her
             grounded.destination, grounded.destination_word = found, prep
@@ -240,6 +242,14 @@ def _by_tool(builder: PlanBuilder, grounded: Grounded) -> None:
     """Choose between a verb's schemas by what it is applied to ("run the dishwasher"
     switches it on; "run the hoover round" hoovers)."""
     schemas, first = grounded.clause.schemas, grounded.objects[0] if grounded.objects else None
+    tool_ref = grounded.instrument
+    if grounded.schema == "clean" and tool_ref is not None and tool_ref.kind == "object":
+        tool_obj = builder.grounder.objects.get(tool_ref.id or "")
+        kinds = (normalize_type(tool_obj.kind.name) if tool_obj else "",
+                 normalize_type(tool_ref.phrase.head or ""))
+        if any(_TOOL_SCHEMAS.get(k) == "vacuum" for k in kinds):
+            grounded.schema = "vacuum"  # "go over the rug with the hoover": hoover it
+            return
     if first is None or first.kind != "object" or grounded.recipient is not None or len(
             schemas) < 2 or grounded.schema not in ("fetch", "pick", "put"):
         return

@@ -58,6 +58,9 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
               for n in (o.name, o.properties.get("name")) if n
               and state.value("animal", (o.id,)) is True}  # "give Biscuit the ..."
     proper = proper_names(request.command)
+    # "son Sam": a capitalised word of a person's role or name is their name on its own too
+    names |= {w for p in state.people.values() for n in (p.name, p.role) if n
+              for w in n.lower().split() if w in proper}
     # A capitalised word that names no thing, verb, room or kind of person is someone's name
     # ("hand Noah the scissors"), though the scene lists nobody by it.
     scene_words = {w for o in state.objects.values() for n in (o.type, o.name) if n
