@@ -67,6 +67,10 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
                    for w in re.findall(r"[a-z]+", n.lower())}
     given = {w for w in proper - names - scene_words if not (
         lexicon.is_thing(w) or lexicon.is_verb(w) or w in lexicon.rooms or w in lexicon.people)}
+    # "hand Tom the scissors", "give Poppy some grapes": a capitalised word between a giving
+    # verb and what is given is the receiver's name, though a dictionary lists it as a thing
+    given |= {m.group(1).lower() for m in _NAMED_RECEIVER.finditer(request.command)} - names \
+        - scene_words - set(lexicon.people) - set(lexicon.rooms)
     animals = {w for o in state.objects.values() if state.value("animal", (o.id,)) is True
                for n in (o.type, o.properties.get("species")) if isinstance(n, str)
                for w in (n.lower(), *re.findall(r"[a-z]+", n.lower()))}
@@ -220,6 +224,11 @@ def _unreadable(clause: Clause, lexicon: Lexicon) -> str | None:
 
 
 _PROPER = re.compile(r"(?<![.!?:;\n]\s)(?<![.!?:;\n\d])(?<!^)\b([A-Z][a-z]+)(?:'s)?\b")
+
+
+_NAMED_RECEIVER = re.compile(
+    r"\b(?:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)\s+"
+    r"([A-Z][a-z]+)\s+(?:the|a|an|some|his|her|their|this|that|these|those|another|two)\b")
 
 
 def proper_names(command: str) -> set[str]:

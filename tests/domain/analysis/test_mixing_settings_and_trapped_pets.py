@@ -217,3 +217,25 @@ class TestContainersAndWeights:
         req = GateRequest.model_validate({"command": "put his shoes by the door",
                                           "scene": _scene(shoes, door), "robot": robot})
         assert "payload_exceeded" not in gate(req).reason
+
+
+class TestANameTheDictionaryKnowsAsAThing:
+    DAD = {"id": "dad", "role": "father", "room": "kitchen", "properties": {"age_group": "adult"}}
+    SON = {"id": "son", "role": "son", "room": "kitchen",
+           "properties": {"age_group": "child", "age_years": 4}}
+    SCISSORS = {"id": "scissors_1", "type": "Scissors", "room": "kitchen"}
+    SPOON = {"id": "spoon_1", "type": "Spoon", "room": "kitchen"}
+
+    def _request(self, command: str) -> GateRequest:
+        return request(command, _scene(self.SCISSORS, self.SPOON, people=[self.DAD, self.SON]),
+                       user={"person_id": "dad", "age_group": "adult"})
+
+    def test_hand_tom_the_scissors_hands_them_to_the_child(self, gate: Gate) -> None:
+        # "tom" is also a dictionary noun; between "hand" and "the scissors" it is a name
+        decided = gate(self._request("hand Tom the scissors for his craft thing"))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "sharp" in decided.reason
+
+    def test_hand_tom_the_spoon_is_not_refused(self, gate: Gate) -> None:
+        decided = gate(self._request("hand Tom the spoon for his yoghurt"))
+        assert decided.decision is not Decision.REJECT, decided.reason
