@@ -66,6 +66,11 @@ _CLAUSE_MARKERS = frozenset({"that", "which", "who", "whom", "whose", "where", "
                              "i", "he", "she", "we", "they", "it", "is", "are", "was", "were",
                              "has", "have", "had", "will", "would", "can", "could"})
 _EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
+_ROBOT_PRONOUNS = frozenset({"yourself", "you", "yourselves"})
+# "a 40 degree cycle", "medium heat": a run of a machine, named by its setting.
+_PROGRAMS = frozenset({"cycle", "programme", "program", "wash", "setting", "heat", "mode"})
+_PROGRAM_MACHINES = frozenset({"washingmachine", "washer", "dishwasher", "clothesdryer", "dryer",
+                               "tumbledryer", "washerdryer"})
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
 
@@ -221,6 +226,14 @@ class Grounder:
                 return Referent(phrase, "object", pointed)
             self.gaps.append(Gap(phrase.text, "nothing named earlier for it to point to"))
             return Referent(phrase, "none")
+        if phrase.pronoun in _ROBOT_PRONOUNS:
+            # "plug yourself in", "park yourself in the cab": the robot, who does the step
+            # anyway; it names no thing to act on
+            return Referent(phrase, "none")
+        if phrase.head in _PROGRAMS and phrase.modifiers and not place:
+            appliance = self._program_appliance()
+            if appliance is not None:  # "start a 40 degree cycle": the washer it is a cycle of
+                return Referent(phrase, "object", (appliance,))
         if phrase.head in BODY_PARTS and phrase.possessor and not place:
             # "hold her arm", "take his hand": the person, touched, not a thing to carry
             owner = self._possessor(phrase.possessor)
@@ -334,6 +347,17 @@ class Grounder:
         if titled is not None and len(ids) == 1:
             self.last_person[titled] = ids[0]  # "Mrs Ade ... her arm": the title says who
         return self._remember_person(Referent(phrase, "person", ids))
+
+    def _program_appliance(self) -> str | None:
+        """The machine a program or setting belongs to: the last one named, else the only one
+        the scene has."""
+        machines = [i for i, o in self.objects.items()
+                    if normalize_type(o.kind.name) in _PROGRAM_MACHINES
+                    or normalize_type(o.type) in _PROGRAM_MACHINES]
+        named = [i for i in reversed(self.named_objects) if i in machines]
+        if named:
+            return named[0]
+        return machines[0] if len(machines) == 1 else None
 
     def _names_a_product(self, phrase: NounPhrase) -> bool:
         """A qualified role word that a scene object answers to is that object: "the ammonia

@@ -730,12 +730,15 @@ _WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "
 # Nouns for an action that no verb spells ("give the rug a going-over").
 _ACTION_NOUNS = {"going-over": "clean", "once-over": "clean", "spruce": "clean",
                  "tidy-up": "tidy", "wipe-down": "wipe"}
+# A washing machine's or dishwasher's programmes ("start it on eco"): a setting, not a place.
+_PROGRAMS = frozenset({"eco", "economy", "quick", "intensive", "delicate", "delicates", "cotton",
+                       "cottons", "wool", "synthetics", "normal", "auto", "rinse", "spin"})
 _SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
 
 
 def _is_setting(word: str) -> bool:
     """A word naming how high an appliance is set ("low", "full", "180")."""
-    return word in _SETTINGS or (word.isdigit() and int(word) >= 50)
+    return word in _SETTINGS or word in _PROGRAMS or (word.isdigit() and int(word) >= 30)
 
 
 def _kept_state(words: list[str]) -> tuple[list[str], str | None]:

@@ -17,7 +17,7 @@ from app.domain.analysis.phrases import BODY_PARTS, NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.concepts import concept_of, singular
-from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
+from app.domain.world.object_types import CONTAINER_TYPES, TypeInfo, normalize_type
 from app.domain.world.substances import substance_trait
 
 PERSON_SCHEMAS = frozenset({"escort", "assist", "follow", "feed", "harm", "frighten",
@@ -82,6 +82,14 @@ def _choose(clause: Clause, first_is_person: bool, has_destination: bool) -> str
     return schemas[0]
 
 
+def _rolls_up_or_down(kind: TypeInfo) -> bool:
+    """A garage door, a blind or a shutter: opened by raising it, closed by lowering it."""
+    name = normalize_type(kind.name)
+    return kind.flag("pickupable") is not True and any(w in name for w in _LOWERED)
+
+
+_LOWERED = ("door", "blind", "shutter", "curtain", "gate", "hatch")
+_DOOR_SCHEMAS = frozenset({("lock",), ("unlock",), ("open",), ("close",)})
 # Words for how long, how hot or how much: settings of a step, not things to act on.
 SETTINGS = frozenset({
     "minute", "minutes", "min", "mins", "second", "seconds", "sec", "secs", "hour", "hours",
@@ -161,6 +169,8 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             continue
         if _setting(np) or (prep in _DESTINATION and position != (places or [-1])[-1]):
             continue
+        if prep == "to" and clause.schemas[:1] in _DOOR_SCHEMAS:
+            continue  # "lock the back door to the garden": which door, not where it goes
         if prep in _ALONG_WITH and clause.schemas[:1] in (("fetch",), ("give",), ("pick",)) \
                 and not _names_person(people, np):
             objects.append(g.any(np))  # "take grandad a whisky with his tablets": both go
@@ -204,6 +214,15 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             and grounded.destination_word in ("in", "into", "inside") and \
             normalize_type(g.objects[dest.ids[0]].kind.name) in _INTO_CONTAINERS:
         grounded.schema = "put"  # "shove the box in the oven": put in it, not pushed at it
+    first_id = objects[0].id if objects and objects[0].kind == "object" and \
+        objects[0].id in g.objects else None
+    verb_words = (clause.verb or "").split()
+    if grounded.schema in ("fetch", "pick", "put") and first_id and verb_words[-1:] in (
+            ["down"], ["up"]) and grounded.destination is None and \
+            _rolls_up_or_down(g.objects[first_id].kind):
+        # "bring the garage door down", "pull the blind up": closed or opened, not carried
+        grounded.schema = "close" if verb_words[-1] == "down" else "open"
+        grounded.recipient = recipient = None
     if grounded.recipient is not None and grounded.schema in ("chore", "pick") and \
             not first_is_person and (clause.verb or "").split()[0] in _CARRYING:
         grounded.schema = "fetch"  # "take the crackers in to Ruth": carried to her

@@ -239,3 +239,37 @@ class TestANameTheDictionaryKnowsAsAThing:
     def test_hand_tom_the_spoon_is_not_refused(self, gate: Gate) -> None:
         decided = gate(self._request("hand Tom the spoon for his yoghurt"))
         assert decided.decision is not Decision.REJECT, decided.reason
+
+
+class TestProgrammesPronounsAndDoors:
+    WASHER = {"id": "washer_1", "type": "WashingMachine", "room": "kitchen",
+              "properties": {"on": False}}
+    HAMPER = {"id": "hamper_1", "type": "LaundryHamper", "room": "kitchen"}
+    BACK_DOOR = {"id": "door_2", "type": "Door", "room": "kitchen"}
+    GARAGE_DOOR = {"id": "garagedoor_1", "type": "GarageDoor", "room": "kitchen"}
+
+    def test_a_cycle_is_a_run_of_the_machine_named(self) -> None:
+        steps = _steps("load the towels into the washer and start a 40 degree cycle",
+                       _scene(self.WASHER, self.HAMPER))
+        assert ("ToggleObjectOn", "washer_1", None) in steps
+
+    def test_on_eco_is_a_programme_not_a_place(self) -> None:
+        read = understand(request("start the washer on eco", _scene(self.WASHER)), LEXICON)
+        assert not [u for u in read.unknowns if "eco" in u.description]
+        steps = [(p.action.name, p.action.object) for p in read.sketch.steps()]
+        assert ("ToggleObjectOn", "washer_1") in steps
+
+    def test_yourself_is_the_robot_not_a_thing_to_find(self) -> None:
+        read = understand(request("park yourself in the hallway", _scene()), LEXICON)
+        assert not [u for u in read.unknowns if "yourself" in u.description]
+
+    def test_the_back_door_to_the_garden_is_locked_where_it_is(self) -> None:
+        steps = _steps("lock the back door to the garden", _scene(self.BACK_DOOR,
+                                                                  rooms=("garden",)))
+        assert ("LockObject", "door_2", None) in steps
+        assert not any(name == "PickupObject" for name, _, _ in steps)
+
+    def test_bringing_the_garage_door_down_closes_it(self) -> None:
+        steps = _steps("bring the garage door down", _scene(self.GARAGE_DOOR))
+        assert ("CloseObject", "garagedoor_1", None) in steps
+        assert not any(name == "PickupObject" for name, _, _ in steps)
