@@ -13,7 +13,7 @@ object named. Fails: never.
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, replace
 
 from app.domain.analysis.lexicon import Lexicon, PersonWord
@@ -100,9 +100,12 @@ class Grounder:
     """Grounds phrases on one request's scene, remembering what pronouns point to."""
 
     def __init__(self, state: WorldState, request: GateRequest, lexicon: Lexicon,
-                 given_names: Collection[str] = ()) -> None:
+                 given_names: Collection[str] = (),
+                 pet_names: Mapping[str, str] | None = None) -> None:
         self.lexicon = lexicon
         self._given_names = frozenset(given_names)
+        self._pet_names = dict(pet_names or {})
+        """Names the command gives the scene's one unnamed pet ("feed Biscuit")."""
         """Names the command uses that the scene lists for nobody ("Noah", "Mrs Patel")."""
         self.objects = dict(state.objects)
         self.people = dict(state.people)
@@ -201,6 +204,9 @@ class Grounder:
 
     def _animal(self, phrase: NounPhrase) -> Referent | None:
         """A pet the scene lists, named or by its kind ("Biscuit", "the dog")."""
+        aliased = self._pet_names.get(phrase.phrase)
+        if aliased is not None:
+            return Referent(phrase, "object", (aliased,))
         words = _words_of(phrase.phrase or phrase.text)
         found = tuple(i for i, o in self.objects.items()
                       if self._base.value("animal", (i,)) is True and words & (_words_of(

@@ -329,6 +329,9 @@ def _person_act(action: str):  # type: ignore[no-untyped-def]
     return handler
 
 
+_PET_BOWLS = ("PetBowl", "DogBowl", "CatBowl", "PetFoodBowl")
+
+
 def _feed(builder: PlanBuilder, grounded: Grounded) -> None:
     people = _ids(grounded, "person") or (
         [grounded.recipient.id] if grounded.recipient and grounded.recipient.id else [])
@@ -336,8 +339,13 @@ def _feed(builder: PlanBuilder, grounded: Grounded) -> None:
                                and grounded.instrument.kind == "object"
                                and grounded.instrument.id else [])
     for person in people:
+        pet = builder.state.entity_type(person) == "object"
+        bowl = builder.find_type(*_PET_BOWLS, room=builder.state.room_of(person)) or \
+            builder.find_type(*_PET_BOWLS) if pet else None
         for food in foods:
-            if builder.acquire(food):
+            if pet:  # a pet eats from its bowl, or from the floor in front of it
+                builder.place(food, bowl or person, relation="in" if bowl else None)
+            elif builder.acquire(food):
                 builder.go_to(person)
                 builder.act("Feed", food, person)
 

@@ -74,8 +74,10 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     animals = {w for o in state.objects.values() if state.value("animal", (o.id,)) is True
                for n in (o.type, o.properties.get("species")) if isinstance(n, str)
                for w in (n.lower(), *re.findall(r"[a-z]+", n.lower()))}
-    reading = Reader(lexicon, names | given, animals).read(request.command)
-    grounder = Grounder(state, request, lexicon, given_names=given)
+    pets = _pet_names(request.command, state, names | scene_words | set(lexicon.people))
+    given -= set(pets)
+    reading = Reader(lexicon, names | given | set(pets), animals).read(request.command)
+    grounder = Grounder(state, request, lexicon, given_names=given, pet_names=pets)
     builder = PlanBuilder(grounder)
     unknowns: list[UnknownFact] = []
     grounded: list[Grounded] = []
@@ -224,6 +226,23 @@ def _unreadable(clause: Clause, lexicon: Lexicon) -> str | None:
 
 
 _PROPER = re.compile(r"(?<![.!?:;\n]\s)(?<![.!?:;\n\d])(?<!^)\b([A-Z][a-z]+)(?:'s)?\b")
+
+
+_PET_CARE = re.compile(r"\b(?:feed|walk|let|brush|groom|bathe|worm)\s+([A-Za-z]+)\b")
+_NOT_A_NAME = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their", "them",
+                         "him", "it", "me", "us", "everyone", "everybody", "some", "this",
+                         "that", "these", "those", "all", "both", "each", "any", "out", "in",
+                         "go", "off"})
+
+
+def _pet_names(command: str, state: WorldState, known: set[str]) -> dict[str, str]:
+    """ "feed Biscuit", "let Bruno out": a word after a pet-care verb that names nothing else
+    is the name of the scene's one pet, when the scene lists that pet without a name."""
+    pets = [o for o in state.objects.values() if state.value("animal", (o.id,)) is True]
+    if len(pets) != 1 or pets[0].name or pets[0].properties.get("name"):
+        return {}
+    return {w: pets[0].id for m in _PET_CARE.finditer(command)
+            if (w := m.group(1).lower()) not in known and w not in _NOT_A_NAME}
 
 
 _NAMED_RECEIVER = re.compile(

@@ -39,6 +39,9 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
          "jam honey butter biscuit biscuits crisps grapes grape orange berries potato "
          "potatoes beans lentils tofu omelette pancake pancakes toast leftovers dinner lunch "
          "breakfast", "food"),
+        # What pets are fed: food, though not for people.
+        ("kibble dog_food cat_food pet_food fish_food flakes birdseed hay pellet_food "
+         "treats chews", "food"),
         ("pills pill medicine medication tablets ibuprofen aspirin paracetamol acetaminophen "
          "insulin antibiotics vitamins warfarin codeine diazepam naproxen sleeping_pills",
          "medication"),

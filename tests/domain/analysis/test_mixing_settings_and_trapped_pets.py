@@ -273,3 +273,28 @@ class TestProgrammesPronounsAndDoors:
         steps = _steps("bring the garage door down", _scene(self.GARAGE_DOOR))
         assert ("CloseObject", "garagedoor_1", None) in steps
         assert not any(name == "PickupObject" for name, _, _ in steps)
+
+
+class TestFeedingTheOnePet:
+    DOG = {"id": "dog_1", "role": "dog", "room": "kitchen", "properties": {"species": "dog"}}
+    BOWL = {"id": "petbowl_1", "type": "PetBowl", "room": "kitchen"}
+    KIBBLE = {"id": "tub_1", "type": "Container", "room": "kitchen",
+              "properties": {"contents": "dog kibble"}}
+    CHOCOLATE = {"id": "choc_1", "type": "Box", "room": "kitchen",
+                 "properties": {"contents": "dark chocolate"}}
+
+    def _scene(self) -> dict[str, Any]:
+        return _scene(self.BOWL, self.KIBBLE, self.CHOCOLATE, people=[*HOME["people"], self.DOG])
+
+    def test_a_name_after_feed_is_the_one_unnamed_pet(self, gate: Gate) -> None:
+        read = understand(request("feed Biscuit a scoop from the tub", self._scene()), LEXICON)
+        assert not read.unknowns, read.unknowns
+        steps = [(p.action.name, p.action.object, p.action.target) for p in read.sketch.steps()]
+        assert ("PutObject", "tub_1", "petbowl_1") in steps
+        decided = gate(request("feed Biscuit a scoop from the tub", self._scene()))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_feeding_the_same_pet_chocolate_is_refused(self, gate: Gate) -> None:
+        decided = gate(request("feed Biscuit the chocolate", self._scene()))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "pet_poisoning" in decided.reason
