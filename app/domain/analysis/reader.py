@@ -470,6 +470,9 @@ class Reader:
         state = body.pop()
         if body and body[-1].endswith("'s") and body[-1] not in _SUBJECTS:
             body[-1] = body[-1][:-2]  # "the back door's locked"
+            subject = " ".join(w for w in body if w not in ("the", "my", "our", "your"))
+            if subject in self.names or subject in self.lexicon.people:
+                return None  # "janet's off now": a person leaving, nothing to switch off
         while len(body) > 2 and body[-1] == "and" and body[-2] in _DIRECTIVE_STATES:
             body = body[:-2]  # "shut and locked": the last state implies the first
         if not body or any(w in _AUXILIARIES or w in _SUBJECTS for w in body):

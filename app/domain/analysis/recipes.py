@@ -34,6 +34,8 @@ _APPLIANCE = {
     "steam": ("StoveBurner",), "barbecue": ("Oven",),
 }
 _DEFAULT_HEAT = ("Microwave", "StoveBurner", "Oven")
+_DRINKS = frozenset({"tea", "coffee", "cocoa", "chocolate", "latte", "espresso", "cappuccino",
+                     "milk"})
 _HOT_DRINKS = frozenset({"tea", "coffee", "cocoa", "chocolate", "cuppa", "latte", "espresso",
                          "cappuccino", "brew", "drink", "soup", "porridge", "milk"})
 
@@ -287,6 +289,11 @@ def make(builder: PlanBuilder, grounded: Grounded) -> None:
                 builder.go_to(cup)
                 builder.act("Pour", kettle, cup)
                 builder.free_hands()
+            added = builder.ingredients.get(grounded.index)
+            if added:  # "- milk, one sugar": the drink the cup then holds
+                drink = next(iter(sorted(words & _DRINKS)), "tea")
+                builder.act("FillWithLiquid", cup, kind="enabling",
+                            liquid=", ".join([drink, *added]))
             made = cup
         if person is not None:
             builder.deliver(made, person)

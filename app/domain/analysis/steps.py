@@ -44,6 +44,8 @@ class PlanBuilder:
         self.notes: list[str] = []
         self.failed: list[str] = []
         self.clause = 0
+        self.ingredients: dict[int, list[str]] = {}
+        """What a later specification ("- milk, one sugar") puts in what a clause makes."""
         self._opened: set[str] = set()
         self._switched: set[str] = set()
 

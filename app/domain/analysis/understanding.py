@@ -26,6 +26,7 @@ from app.domain.analysis.steps import PlanBuilder
 from app.domain.models import GateRequest, UnknownFact
 from app.domain.world import WorldState, state_from_request
 from app.domain.world.entities import frozen_mapping
+from app.domain.world.substances import substance_trait
 
 
 @dataclass
@@ -84,7 +85,13 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     others: list[Clause] = []
     actionable = any(c.kind == "step" and c.schemas and c.schemas != ("goal",)
                      for c in reading.clauses)
+    specifications = _specifications(reading.clauses, lexicon)
+    for made, added in specifications.values():
+        builder.ingredients[made] = added
     for index, clause in enumerate(reading.clauses):
+        if index in specifications:
+            others.append(clause)  # "make Dad a cuppa - milk, one sugar": what goes in it
+            continue
         if clause.kind == "heading" and not harm_stated(clause.text, lexicon):
             grounder.remember(clause.text)  # "Leo's party tea:" names things, asks nothing
             others.append(clause)
@@ -233,6 +240,47 @@ _NOT_A_NAME = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "t
                          "him", "it", "me", "us", "everyone", "everybody", "some", "this",
                          "that", "these", "those", "all", "both", "each", "any", "out", "in",
                          "go", "off"})
+
+
+_AMOUNTS = frozenset({"one", "two", "three", "a", "an", "some", "extra", "little", "bit", "splash",
+                      "dash", "drop", "spoon", "spoonful", "sugars", "lump", "lumps", "of",
+                      "please", "just", "lots", "plenty", "and", "with", "strong", "weak", "black",
+                      "white", "milky", "hot", "warm", "cold", "thin", "thick", "slice", "slices",
+                      "no", "not", "without", "too", "much", "half", "double", "single", "shot",
+                      "on", "the", "side", "ta", "cheers", "thanks", "x"})
+_NEGATING = frozenset({"no", "not", "without"})
+
+
+def _specifications(clauses: tuple[Clause, ...], lexicon: Lexicon,
+                    ) -> dict[int, tuple[int, list[str]]]:
+    """Verbless specifications of a drink or dish ("- milk, one sugar", "extra jam"), by
+    clause: the clause that makes the thing they belong to, and what they add to it."""
+    found: dict[int, tuple[int, list[str]]] = {}
+    for index, clause in enumerate(clauses):
+        if clause.kind != "step" or _unreadable(clause, lexicon) is None:
+            continue
+        added = _ingredients(clause.text)
+        makers = [i for i in range(index) if clauses[i].kind == "step"
+                  and "make" in clauses[i].schemas]
+        if added is not None and makers:
+            found[index] = (makers[-1], added)
+    return found
+
+
+def _ingredients(text: str) -> list[str] | None:
+    """The substances a verbless specification adds ("milk, one sugar", "milky, no sugar",
+    "extra jam"), or None when the words are more than a specification. Negated substances
+    ("no sugar") add nothing."""
+    words = [w for w in re.findall(r"[a-z]+", text.lower())]
+    substances = [w for w in words if w not in _AMOUNTS and any(
+        substance_trait(w, t) is not None for t in ("food", "liquid"))]
+    if not substances or any(w not in _AMOUNTS and w not in substances for w in words):
+        return None
+    added = [w for i, w in enumerate(words) if w in substances
+             and not (i and words[i - 1] in _NEGATING)]
+    if "milky" in words:
+        added.append("milk")
+    return added
 
 
 def _pet_names(command: str, state: WorldState, known: set[str]) -> dict[str, str]:

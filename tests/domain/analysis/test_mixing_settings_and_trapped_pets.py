@@ -298,3 +298,30 @@ class TestFeedingTheOnePet:
         decided = gate(request("feed Biscuit the chocolate", self._scene()))
         assert decided.decision is Decision.REJECT, decided.reason
         assert "pet_poisoning" in decided.reason
+
+
+class TestASpecificationAfterAnOrder:
+    KETTLE = {"id": "kettle_1", "type": "Kettle", "room": "kitchen"}
+
+    def _dad(self, allergies: list[str]) -> dict[str, Any]:
+        return {"id": "dad", "role": "dad", "room": "living_room",
+                "properties": {"age_group": "adult", "allergies": allergies}}
+
+    def test_milk_one_sugar_is_what_goes_in_the_tea(self, gate: Gate) -> None:
+        scene = _scene(self.KETTLE, people=[self._dad([])])
+        command = "make Dad a cuppa and bring it through - milk, one sugar"
+        read = understand(request(command, scene), LEXICON)
+        assert not [u for u in read.unknowns if "sugar" in u.description], read.unknowns
+        decided = gate(request(command, scene))
+        assert decided.decision is not Decision.REJECT, decided.reason
+
+    def test_the_same_milk_for_a_dad_allergic_to_it_is_not_authorized(self, gate: Gate) -> None:
+        scene = _scene(self.KETTLE, people=[self._dad(["milk"])])
+        decided = gate(request("make Dad a cuppa and bring it through - milk, one sugar", scene))
+        assert decided.decision is not Decision.AUTHORIZE, decided.reason
+
+    def test_no_milk_adds_no_milk(self, gate: Gate) -> None:
+        scene = _scene(self.KETTLE, people=[self._dad(["milk"])])
+        decided = gate(request("make Dad a cuppa and bring it through - no milk, one sugar",
+                               scene))
+        assert "allergen" not in decided.reason, decided.reason
