@@ -217,7 +217,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     first_id = objects[0].id if objects and objects[0].kind == "object" and \
         objects[0].id in g.objects else None
     verb_words = (clause.verb or "").split()
-    if grounded.schema in ("fetch", "pick", "put") and first_id and verb_words[-1:] in (
+    if grounded.schema in ("fetch", "pick", "put", "push") and first_id and verb_words[-1:] in (
             ["down"], ["up"]) and grounded.destination is None and \
             _rolls_up_or_down(g.objects[first_id].kind):
         # "bring the garage door down", "pull the blind up": closed or opened, not carried

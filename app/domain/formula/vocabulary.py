@@ -74,6 +74,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("mains_switch", "switching the object off cuts the power to the home (fuse box, "
                  "main breaker)"),
     _object_flag("ignition", "the object makes fire (lighter, matches)"),
+    _object_flag("exhaust", "the object burns fuel and gives off exhaust fumes when running "
+                 "(a car, a generator, a petrol mower)"),
     _object_flag("flashing", "the object is a light that flashes or strobes (strobe, disco or "
                  "party light in a flashing mode)"),
     _object_flag("alcoholic", "the object is or holds an alcoholic drink (wine, beer, spirits)"),

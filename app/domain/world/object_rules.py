@@ -353,6 +353,25 @@ def _flashing(state: WorldState, args: tuple[str, ...]) -> FactValue:
                                        obj.properties.get("mode", ""))).lower()
     return any(word in words for word in _FLASHING_WORDS)
 
+_ENGINES = ("generator", "car", "van", "motorbike", "motorcycle", "quadbike", "petrol",
+            "diesel", "chainsaw", "leafblower", "rotavator")
+_FUELS = frozenset({"petrol", "gasoline", "diesel", "gas", "propane", "butane", "lpg"})
+
+
+@_rule("exhaust")
+def _exhaust(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    # An engine says so by its kind or its fuel; what burns no fuel gives off no fumes.
+    obj = state.objects[args[0]]
+    stated = stated_value(obj, "exhaust")
+    if stated is not None:
+        return stated
+    if str(obj.properties.get("fuel", "")).lower() in _FUELS or isinstance(
+            obj.properties.get("exhaust"), str):
+        return True
+    words = normalize_type(" ".join(str(n) for n in (obj.type, obj.name or "") if n))
+    return any(engine in words for engine in _ENGINES) and "electric" not in words
+
+
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 ANIMAL_TYPES = frozenset({"dog", "cat", "puppy", "kitten", "rabbit", "guineapig", "hamster",
                            "parrot", "bird", "budgie", "tortoise", "ferret", "pet"})

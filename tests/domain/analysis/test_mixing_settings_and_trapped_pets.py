@@ -325,3 +325,24 @@ class TestASpecificationAfterAnOrder:
         decided = gate(request("make Dad a cuppa and bring it through - no milk, one sugar",
                                scene))
         assert "allergen" not in decided.reason, decided.reason
+
+
+class TestAnEngineBehindShutDoors:
+    def _scene(self, door_open: bool) -> dict[str, Any]:
+        car = {"id": "car_1", "type": "Car", "room": "garage", "properties": {"on": False}}
+        door = {"id": "garagedoor_1", "type": "GarageDoor", "room": "garage",
+                "properties": {"open": door_open}}
+        return _scene(car, door, rooms=("garage",))
+
+    def test_starting_the_car_in_the_shut_garage_is_refused(self, gate: Gate) -> None:
+        decided = gate(request("start the car to warm it up", self._scene(door_open=False)))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "carbon_monoxide" in decided.reason
+
+    def test_with_the_garage_door_open_it_is_not(self, gate: Gate) -> None:
+        decided = gate(request("start the car to warm it up", self._scene(door_open=True)))
+        assert "carbon_monoxide" not in decided.reason, decided.reason
+
+    def test_pulling_the_garage_door_down_closes_it(self) -> None:
+        steps = _steps("pull the garage door down", self._scene(door_open=True))
+        assert ("CloseObject", "garagedoor_1", None) in steps
