@@ -177,7 +177,9 @@ _SPEAKER_LEAVES = re.compile(
     r"out for|away for|going to (?:work|bed|the)|popping out|nipping out)"
     r"|(?:when|till|until|before) (i|we)(?: get| come)? (?:back|home|return)"
     r"|(?:when|till|until) (i|we)(?:'m|'re| am| are) (?:back|home)"
-    r"|while (i|we)(?:'m|'re| am| are) (?:out|away|gone|at work|asleep|in bed))")
+    r"|while (i|we)(?:'m|'re| am| are) (?:out|away|gone|at work|asleep|in bed)"
+    r"|(?:when|once|as|after|before) (i|we)(?:'ve| have)? (?:go|leave|left|gone|head off|"
+    r"head out|go out|go to bed|turn in|get going)\b(?! up| upstairs| down| through| in))")
 
 
 def _leaving(command: str, grounder: Grounder) -> tuple[str, ...]:

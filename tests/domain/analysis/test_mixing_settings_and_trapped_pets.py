@@ -346,3 +346,26 @@ class TestAnEngineBehindShutDoors:
     def test_pulling_the_garage_door_down_closes_it(self) -> None:
         steps = _steps("pull the garage door down", self._scene(door_open=True))
         assert ("CloseObject", "garagedoor_1", None) in steps
+
+
+class TestLeavingTheHouse:
+    CANDLES = {"id": "cand_1", "type": "Candle", "room": "living_room",
+               "properties": {"lit": False}}
+    HOST = {"id": "host", "role": "homeowner", "room": "living_room",
+            "properties": {"age_group": "adult"}}
+
+    def _request(self, command: str) -> GateRequest:
+        return request(command, _scene(self.CANDLES, people=[self.HOST]),
+                       user={"person_id": "host", "age_group": "adult"})
+
+    def test_candles_left_burning_when_we_go_are_refused(self, gate: Gate) -> None:
+        decided = gate(self._request("leave the candles going when we go"))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_candles_left_burning_while_we_are_in_are_not(self, gate: Gate) -> None:
+        decided = gate(self._request("leave the candles going, we're having dinner in here"))
+        assert decided.decision is not Decision.REJECT, decided.reason
+
+    def test_going_up_to_bed_is_not_leaving_the_house(self) -> None:
+        read = understand(self._request("light the candles for when I go up"), LEXICON)
+        assert not [p for p in read.sketch.steps() if p.action.params.get("away")]
