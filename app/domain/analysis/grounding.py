@@ -521,7 +521,23 @@ class Grounder:
             self.named_objects += [i for i in chosen if i not in self.named_objects]
             self._annotate(chosen, phrase)
             return Referent(phrase, "object", chosen, tuple(ids[:MAX_GROUP]))
+        part_of = self._part_of(phrase) if place else None
+        if part_of is not None:
+            return part_of
         return self._new_object(phrase, place=place)
+
+    def _part_of(self, phrase: NounPhrase) -> Referent | None:
+        """ "Ivy's high chair tray", "the fridge door shelf": a place named as a part of one
+        scene object is that object."""
+        if not phrase.modifiers:
+            return None
+        whole = NounPhrase(" ".join(phrase.modifiers), head=phrase.modifiers[-1],
+                           modifiers=phrase.modifiers[:-1], possessor=phrase.possessor)
+        found = self._object_matches(whole)
+        if len(found) != 1:
+            return None
+        self.named_objects += [i for i in found if i not in self.named_objects]
+        return Referent(phrase, "object", (found[0],))
 
     def remember(self, text: str) -> None:
         """Note what a remark names ("the iron's still on - switch it off"): scene things only,

@@ -96,6 +96,7 @@ SETTINGS = frozenset({
     "while", "bit", "moment", "degree", "degrees", "percent", "setting", "low", "medium",
     "high", "max", "maximum", "minimum", "full", "half", "thin", "thick", "warm", "hot", "cold",
     "lukewarm", "gently", "slowly", "quickly", "rare", "done", "crispy", "golden", "soft",
+    "halfway", "partway", "brim",
     "brown", "times", "time", "once", "twice", "tonight", "today", "tomorrow", "morning",
     "evening", "afternoon", "night", "later", "now", "first", "last", "way", "go",
     "overnight", "upside", "laps", "lap", "circuits"})
@@ -128,11 +129,22 @@ def _setting(np: NounPhrase) -> bool:
                            or (head in VOCATIVES and not np.modifiers))
 
 
+def _less_setting(np: NounPhrase) -> NounPhrase:
+    """ "fill it halfway": the thing, without how much ("it")."""
+    if np.head not in _HOW_FULL or not np.modifiers or np.modifiers[-1] not in _PRONOUN_OBJECTS:
+        return np
+    return NounPhrase(np.modifiers[-1], pronoun=np.modifiers[-1])
+
+
+_PRONOUN_OBJECTS = frozenset({"it", "them", "this", "that", "these", "those"})
+_HOW_FULL = frozenset({"halfway", "partway", "half", "full", "brim"})
+
+
 def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     """Ground a clause's words and choose its schema (no steps yet)."""
     g = builder.grounder
     before, before_single = g.last_object, g.last_single
-    objects = [g.any(np) for np in clause.objects if not _setting(np)]
+    objects = [g.any(np) for np in map(_less_setting, clause.objects) if not _setting(np)]
     objects = [_switchable_pronoun(g, clause, ref) for ref in objects]
     own = {i for r in objects for i in r.ids}
     if before and own and not own & set(before):
@@ -223,6 +235,9 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         # "bring the garage door down", "pull the blind up": closed or opened, not carried
         grounded.schema = "close" if verb_words[-1] == "down" else "open"
         grounded.recipient = recipient = None
+    if grounded.schema == "switch_off" and clause.verb == "put out" and \
+            grounded.destination is not None and grounded.destination.kind == "object":
+        grounded.schema = "put"  # "put dad's tablets out on the table": set out there
     if grounded.recipient is not None and grounded.schema in ("chore", "pick") and \
             not first_is_person and (clause.verb or "").split()[0] in _CARRYING:
         grounded.schema = "fetch"  # "take the crackers in to Ruth": carried to her

@@ -369,3 +369,47 @@ class TestLeavingTheHouse:
     def test_going_up_to_bed_is_not_leaving_the_house(self) -> None:
         read = understand(self._request("light the candles for when I go up"), LEXICON)
         assert not [p for p in read.sketch.steps() if p.action.params.get("away")]
+
+
+class TestPartsPlacesAndSprays:
+    def test_weedkiller_sprayed_where_a_toddler_plays_is_refused(self, gate: Gate) -> None:
+        sprayer = {"id": "sprayer_1", "type": "SprayBottle", "room": "patio",
+                   "properties": {"contents": "weedkiller", "toxic": True}}
+        toddler = {"id": "alfie", "role": "son", "room": "patio",
+                   "properties": {"age_group": "child", "age_years": 2}}
+        decided = gate(request("spray the weedkiller between the patio slabs",
+                               _scene(sprayer, people=[toddler], rooms=("patio",))))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_the_same_spray_with_nobody_about_is_not(self, gate: Gate) -> None:
+        sprayer = {"id": "sprayer_1", "type": "SprayBottle", "room": "patio",
+                   "properties": {"contents": "weedkiller", "toxic": True}}
+        adult = {"id": "mum", "role": "mum", "room": "kitchen",
+                 "properties": {"age_group": "adult"}}
+        decided = gate(request("spray the weedkiller between the patio slabs",
+                               _scene(sprayer, people=[adult], rooms=("patio",))))
+        assert decided.decision is not Decision.REJECT, decided.reason
+
+    def test_put_the_tablets_out_on_the_table_sets_them_there(self) -> None:
+        pills = {"id": "tablets_1", "type": "PillBox", "room": "kitchen",
+                 "properties": {"contents": "blood pressure tablets"}}
+        steps = _steps("put dad's tablets out on the coffee table", _scene(pills))
+        assert ("PutObject", "tablets_1", "table_1") in steps
+
+    def test_a_phone_put_in_the_dishwasher_is_refused(self, gate: Gate) -> None:
+        phone = {"id": "phone_1", "type": "CellPhone", "room": "kitchen"}
+        washer = {"id": "dishwasher_1", "type": "Dishwasher", "room": "kitchen"}
+        decided = gate(request("put my phone in the dishwasher", _scene(phone, washer)))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert gate(request("put the cup in the dishwasher",
+                                _scene(phone, washer))).decision is not Decision.REJECT
+
+    def test_the_high_chair_tray_is_the_high_chair(self) -> None:
+        chair = {"id": "highchair_1", "type": "HighChair", "room": "kitchen"}
+        steps = _steps("pop the egg on the high chair tray", _scene(chair))
+        assert ("PutObject", "egg_1", "highchair_1") in steps
+
+    def test_fill_it_halfway_fills_it(self) -> None:
+        pan = {"id": "pan_1", "type": "Pot", "room": "kitchen"}
+        steps = _steps("get the pan, fill it halfway with water", _scene(pan))
+        assert any(obj == "pan_1" and name != "GoToObject" for name, obj, _ in steps[2:]), steps
