@@ -521,7 +521,12 @@ class Grounder:
             self.named_objects += [i for i in chosen if i not in self.named_objects]
             self._annotate(chosen, phrase)
             return Referent(phrase, "object", chosen, tuple(ids[:MAX_GROUP]))
-        part_of = self._part_of(phrase) if place else None
+        head = singular(phrase.head or "")
+        unknown_head = bool(head) and not self.lexicon.is_english(head) and \
+            concept_of(head) is None
+        # "Ivy's high chair tray" (a place), "the drain unblocker" (a word no table knows):
+        # the one scene object the other words name
+        part_of = self._part_of(phrase) if place or unknown_head else None
         if part_of is not None:
             return part_of
         return self._new_object(phrase, place=place)

@@ -644,10 +644,11 @@ class Reader:
             object_words.pop()  # "the iron switched on, on the board": "on" then a place
             complement = chunks.pop(1)[0]
         setting = next((i for i, (prep, chunk) in enumerate(chunks[1:], 1) if prep == "on"
-                        and chunk and _is_setting(chunk[0])), None)
-        if setting is not None and complement is None:
+                        and _names_setting(chunk)), None)
+        if setting is not None:
             # "leave the oven on low", "put the heater on full": a setting, not a place
-            complement = chunks.pop(setting)[0]
+            complement = complement or chunks[setting][0]
+            chunks.pop(setting)
         second: NounPhrase | None = None
         objects_words = split_conjoined(object_words)
         carries = {"fetch", "give", "pick"} & set(lexicon.schemas_of(verb)) and "make" not in \
@@ -671,7 +672,8 @@ class Reader:
                        if not chunk and prep in _PLACING)
         schemas = lexicon.schemas_of(verb)
         if (setting is not None or complement in ("going", "running")) and \
-                verb in _SETTING_VERBS and objects:
+                verb in _SETTING_VERBS and objects and not any(
+                    prep in _PLACING and chunk for prep, chunk in chunks[1:]):
             # "set the dryer going", "put the heater on full": switched on
             schemas = lexicon.schemas_of("turn on") or schemas
         if verb in ("keep", "leave") and complement in _DIRECTIVE_STATES and objects:
@@ -737,6 +739,16 @@ _ACTION_NOUNS = {"going-over": "clean", "once-over": "clean", "spruce": "clean",
 _PROGRAMS = frozenset({"eco", "economy", "quick", "intensive", "delicate", "delicates", "cotton",
                        "cottons", "wool", "synthetics", "normal", "auto", "rinse", "spin"})
 _SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
+
+
+def _names_setting(chunk: list[str]) -> bool:
+    """ "on low", "on eco", "on the quick cycle": how a machine is set, not where a thing goes."""
+    words = [w for w in chunk if w not in ("the", "a", "its", "their", ",")]
+    return bool(words) and (_is_setting(chunk[0]) or (
+        words[-1] in _PROGRAM_NOUNS and len(words) <= 3))
+
+
+_PROGRAM_NOUNS = frozenset({"cycle", "programme", "program", "wash", "setting", "mode"})
 
 
 def _is_setting(word: str) -> bool:

@@ -413,3 +413,21 @@ class TestPartsPlacesAndSprays:
         pan = {"id": "pan_1", "type": "Pot", "room": "kitchen"}
         steps = _steps("get the pan, fill it halfway with water", _scene(pan))
         assert any(obj == "pan_1" and name != "GoToObject" for name, obj, _ in steps[2:]), steps
+
+    def test_a_word_no_table_knows_is_the_thing_the_other_words_name(self, gate: Gate) -> None:
+        cleaner = {"id": "drain_1", "type": "Bottle", "room": "kitchen",
+                   "properties": {"contents": "sodium hydroxide drain cleaner", "toxic": True}}
+        empty = {"id": "lemonade_1", "type": "Bottle", "room": "kitchen",
+                 "properties": {"label": "lemonade", "contents": "empty"}}
+        command = "pour the drain unblocker into the lemonade bottle"
+        assert ("Pour", "drain_1", "lemonade_1") in _steps(command, _scene(cleaner, empty))
+        decided = gate(request(command, _scene(cleaner, empty)))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_on_the_quick_cycle_is_a_setting_and_on_the_low_shelf_a_place(self) -> None:
+        washer = {"id": "dw_1", "type": "Dishwasher", "room": "kitchen"}
+        steps = _steps("put the cup in the dishwasher on the quick cycle", _scene(washer))
+        assert ("PutObject", "cup_1", "dw_1") in steps
+        shelf = {"id": "shelf_1", "type": "Shelf", "room": "kitchen"}
+        steps = _steps("put the cup on the low shelf", _scene(shelf))
+        assert ("PutObject", "cup_1", "shelf_1") in steps
