@@ -18,15 +18,16 @@ from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
 from app.domain.analysis.grounding import Grounder
 from app.domain.analysis.handlers import apply_clause
 from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.names import scene_names
 from app.domain.analysis.questions import not_understood, which_one
 from app.domain.analysis.reader import Clause, Reader, sounds_like_statement
 from app.domain.analysis.schemas import Grounded, ground_clause
 from app.domain.analysis.sketch import Sketch
+from app.domain.analysis.specifications import specifications
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.models import GateRequest, UnknownFact
 from app.domain.world import WorldState, state_from_request
 from app.domain.world.entities import frozen_mapping
-from app.domain.world.substances import substance_trait
 
 
 @dataclass
@@ -54,30 +55,10 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
         The understanding; its `unknowns` list what could not be read.
     """
     state = state_from_request(request)
-    names = {n.lower() for p in state.people.values() for n in (p.id, p.name, p.role) if n}
-    names |= {str(n).lower() for o in state.objects.values()
-              for n in (o.name, o.properties.get("name")) if n
-              and state.value("animal", (o.id,)) is True}  # "give Biscuit the ..."
-    proper = proper_names(request.command)
-    # "son Sam": a capitalised word of a person's role or name is their name on its own too
-    names |= {w for p in state.people.values() for n in (p.name, p.role) if n
-              for w in n.lower().split() if w in proper}
-    # A capitalised word that names no thing, verb, room or kind of person is someone's name
-    # ("hand Noah the scissors"), though the scene lists nobody by it.
-    scene_words = {w for o in state.objects.values() for n in (o.type, o.name) if n
-                   for w in re.findall(r"[a-z]+", n.lower())}
-    given = {w for w in proper - names - scene_words if not (
-        lexicon.is_thing(w) or lexicon.is_verb(w) or w in lexicon.rooms or w in lexicon.people)}
-    # "hand Tom the scissors", "give Poppy some grapes": a capitalised word between a giving
-    # verb and what is given is the receiver's name, though a dictionary lists it as a thing
-    given |= {m.group(1).lower() for m in _NAMED_RECEIVER.finditer(request.command)} - names \
-        - scene_words - set(lexicon.people) - set(lexicon.rooms)
-    animals = {w for o in state.objects.values() if state.value("animal", (o.id,)) is True
-               for n in (o.type, o.properties.get("species")) if isinstance(n, str)
-               for w in (n.lower(), *re.findall(r"[a-z]+", n.lower()))}
-    pets = _pet_names(request.command, state, names | scene_words | set(lexicon.people))
-    given -= set(pets)
-    reading = Reader(lexicon, names | given | set(pets), animals).read(request.command)
+    named = scene_names(request.command, state, lexicon)
+    names, proper, given, pets = named.names, named.proper, named.given, named.pets
+    reading = Reader(lexicon, names | given | set(pets), named.animals).read(
+        request.command)
     grounder = Grounder(state, request, lexicon, given_names=given, pet_names=pets)
     builder = PlanBuilder(grounder)
     unknowns: list[UnknownFact] = []
@@ -85,11 +66,11 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
     others: list[Clause] = []
     actionable = any(c.kind == "step" and c.schemas and c.schemas != ("goal",)
                      for c in reading.clauses)
-    specifications = _specifications(reading.clauses, lexicon)
-    for made, added in specifications.values():
+    found = specifications(reading.clauses, lexicon, _unreadable)
+    for made, added in found.values():
         builder.ingredients[made] = added
     for index, clause in enumerate(reading.clauses):
-        if index in specifications:
+        if index in found:
             others.append(clause)  # "make Dad a cuppa - milk, one sugar": what goes in it
             continue
         if clause.kind == "heading" and not harm_stated(clause.text, lexicon):
@@ -232,78 +213,6 @@ def _unreadable(clause: Clause, lexicon: Lexicon) -> str | None:
     if clause.schemas == ("goal",) and not harm_stated(clause.text, lexicon):
         return "a goal, not a task: it does not say what to do"
     return None
-
-
-_PROPER = re.compile(r"(?<![.!?:;\n]\s)(?<![.!?:;\n\d])(?<!^)\b([A-Z][a-z]+)(?:'s)?\b")
-
-
-_PET_CARE = re.compile(r"\b(?:feed|walk|let|brush|groom|bathe|worm)\s+([A-Za-z]+)\b")
-_NOT_A_NAME = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their", "them",
-                         "him", "it", "me", "us", "everyone", "everybody", "some", "this",
-                         "that", "these", "those", "all", "both", "each", "any", "out", "in",
-                         "go", "off"})
-
-
-_AMOUNTS = frozenset({"one", "two", "three", "a", "an", "some", "extra", "little", "bit", "splash",
-                      "dash", "drop", "spoon", "spoonful", "sugars", "lump", "lumps", "of",
-                      "please", "just", "lots", "plenty", "and", "with", "strong", "weak", "black",
-                      "white", "milky", "hot", "warm", "cold", "thin", "thick", "slice", "slices",
-                      "no", "not", "without", "too", "much", "half", "double", "single", "shot",
-                      "on", "the", "side", "ta", "cheers", "thanks", "x"})
-_NEGATING = frozenset({"no", "not", "without"})
-
-
-def _specifications(clauses: tuple[Clause, ...], lexicon: Lexicon,
-                    ) -> dict[int, tuple[int, list[str]]]:
-    """Verbless specifications of a drink or dish ("- milk, one sugar", "extra jam"), by
-    clause: the clause that makes the thing they belong to, and what they add to it."""
-    found: dict[int, tuple[int, list[str]]] = {}
-    for index, clause in enumerate(clauses):
-        if clause.kind != "step" or _unreadable(clause, lexicon) is None:
-            continue
-        added = _ingredients(clause.text)
-        makers = [i for i in range(index) if clauses[i].kind == "step"
-                  and "make" in clauses[i].schemas]
-        if added is not None and makers:
-            found[index] = (makers[-1], added)
-    return found
-
-
-def _ingredients(text: str) -> list[str] | None:
-    """The substances a verbless specification adds ("milk, one sugar", "milky, no sugar",
-    "extra jam"), or None when the words are more than a specification. Negated substances
-    ("no sugar") add nothing."""
-    words = [w for w in re.findall(r"[a-z]+", text.lower())]
-    substances = [w for w in words if w not in _AMOUNTS and any(
-        substance_trait(w, t) is not None for t in ("food", "liquid"))]
-    if not substances or any(w not in _AMOUNTS and w not in substances for w in words):
-        return None
-    added = [w for i, w in enumerate(words) if w in substances
-             and not (i and words[i - 1] in _NEGATING)]
-    if "milky" in words:
-        added.append("milk")
-    return added
-
-
-def _pet_names(command: str, state: WorldState, known: set[str]) -> dict[str, str]:
-    """ "feed Biscuit", "let Bruno out": a word after a pet-care verb that names nothing else
-    is the name of the scene's one pet, when the scene lists that pet without a name."""
-    pets = [o for o in state.objects.values() if state.value("animal", (o.id,)) is True]
-    if len(pets) != 1 or pets[0].name or pets[0].properties.get("name"):
-        return {}
-    return {w: pets[0].id for m in _PET_CARE.finditer(command)
-            if (w := m.group(1).lower()) not in known and w not in _NOT_A_NAME}
-
-
-_NAMED_RECEIVER = re.compile(
-    r"\b(?:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)\s+"
-    r"([A-Z][a-z]+)\s+(?:the|a|an|some|his|her|their|this|that|these|those|another|two)\b")
-
-
-def proper_names(command: str) -> set[str]:
-    """Capitalised words inside a sentence ("... the fish pie, Sam's allergic"): names, which
-    no dictionary lists, so a remark that uses them is still plain English."""
-    return {m.group(1).lower() for m in _PROPER.finditer(command.strip())} - {"i"}
 
 
 def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
