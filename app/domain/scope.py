@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 from pydantic import BaseModel, ConfigDict
 
-from app.domain.analysis.grounding import USER_ID
+from app.domain.analysis.referents import USER_ID
 from app.domain.analysis.sketch import Choice, Planned
 from app.domain.models import GateRequest
 from app.domain.world import WorldState, state_from_request

@@ -26,11 +26,11 @@ from app.domain.analysis.aggregate import aggregate
 from app.domain.analysis.answers import apply_answers
 from app.domain.analysis.coverage import uncovered
 from app.domain.analysis.declared import RULES, Declared
-from app.domain.analysis.grounding import USER_ID
 from app.domain.analysis.judge import Focus, judge
 from app.domain.analysis.lexicon import Lexicon, load_lexicon
 from app.domain.analysis.library import LibraryCache, judged_in_analysis
 from app.domain.analysis.questions import not_understood
+from app.domain.analysis.referents import USER_ID
 from app.domain.analysis.schemas import Grounded
 from app.domain.analysis.simulate import Trace, simulate
 from app.domain.analysis.sketch import variants

@@ -7,59 +7,40 @@ words that name nothing it can place. A thing the command names that the scene l
 the object concepts know ("a glass of water"), becomes a new entity of that type whose facts are
 unknown unless the words give them; so does a person a role word names ("the guest").
 `scene()` returns the state with those entities added. Pronouns point to the last person or
-object named. Fails: never.
+object named. People and pets are resolved by `PeopleGrounding` (grounding_people.py), which
+`Grounder` extends. Fails: never.
 """
 
 from __future__ import annotations
 
 import re
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
-from app.domain.analysis.lexicon import Lexicon, PersonWord
-from app.domain.analysis.phrases import BODY_PARTS, TITLES, NounPhrase
+from app.domain.analysis.grounding_people import PeopleGrounding
+from app.domain.analysis.lexicon import Lexicon
+from app.domain.analysis.phrases import BODY_PARTS, NounPhrase
+from app.domain.analysis.referents import (
+    GENERIC_WORDS,
+    MAX_GROUP,
+    Gap,
+    Referent,
+    words_of,
+)
 from app.domain.formula.facts import Unknown
 from app.domain.models import GateRequest
-from app.domain.world import ObjectState, PersonState, WorldState, type_info
+from app.domain.world import ObjectState, WorldState, type_info
 from app.domain.world.concepts import concept_of, singular
 from app.domain.world.entities import frozen_mapping
 from app.domain.world.object_types import normalize_type
 from app.domain.world.substances import substance_trait
 
-USER_ID = "user"
-_GENERIC = frozenset({"the", "a", "object", "thing", "person", "room", "on", "off", "it", "is"})
 _STATE_WORDS = {"hot": ("hot", True), "warm": ("hot", True), "cold": ("cold", True),
                 "empty": ("filled", False), "full": ("filled", True), "open": ("open", True),
                 "closed": ("open", False), "dirty": ("dirty", True), "clean": ("dirty", False),
                 "broken": ("broken", True), "lit": ("is_on", True), "running": ("is_on", True)}
 _SIGNATURE = ("hot", "sharp", "toxic", "electrical", "breakable", "filled", "contents", "is_on",
               "medication", "heavy", "valuable", "food", "flammable", "metal", "open")
-_SPLIT = re.compile(r"[^a-z0-9]+")
-MAX_GROUP = 6
-
-
-@dataclass(frozen=True, slots=True)
-class Referent:
-    """What a phrase names: `ids` chosen; `candidates` when several fit and differ."""
-
-    phrase: NounPhrase
-    kind: str  # object | person | room | substance | none
-    ids: tuple[str, ...] = ()
-    candidates: tuple[str, ...] = ()
-    new: bool = False
-    substance: str | None = None
-
-    @property
-    def id(self) -> str | None:
-        return self.ids[0] if self.ids else None
-
-
-@dataclass(frozen=True, slots=True)
-class Gap:
-    """Words the reader could not map: quoted back in the comprehension question."""
-
-    words: str
-    why: str
 
 
 _CLAUSE_MARKERS = frozenset({"that", "which", "who", "whom", "whose", "where", "when", "you",
@@ -78,15 +59,6 @@ _LOCKED = frozenset({"locked", "child-locked", "childproof", "child-proof", "pad
 _INDEFINITE = frozenset({"everything", "anything", "something", "whatever"})
 
 
-def _words_of(*texts: str | None) -> set[str]:
-    found: set[str] = set()
-    for text in texts:
-        if text:
-            found |= {w for w in _SPLIT.split(text.lower().replace("_", " ")) if w}
-            found |= {singular(w) for w in found}
-    return found
-
-
 def _names_a_room(phrase: NounPhrase) -> bool:
     """ "the store room", "the boiler room", "a storeroom": a kind of room the layout does
     not list is still a room, not a thing to put something on."""
@@ -96,7 +68,7 @@ def _names_a_room(phrase: NounPhrase) -> bool:
                                                    and head not in ("mushroom", "broom"))
 
 
-class Grounder:
+class Grounder(PeopleGrounding):
     """Grounds phrases on one request's scene, remembering what pronouns point to."""
 
     def __init__(self, state: WorldState, request: GateRequest, lexicon: Lexicon,
@@ -104,9 +76,9 @@ class Grounder:
                  pet_names: Mapping[str, str] | None = None) -> None:
         self.lexicon = lexicon
         self._given_names = frozenset(given_names)
+        """Names the command uses that the scene lists for nobody ("Noah", "Mrs Patel")."""
         self._pet_names = dict(pet_names or {})
         """Names the command gives the scene's one unnamed pet ("feed Biscuit")."""
-        """Names the command uses that the scene lists for nobody ("Noah", "Mrs Patel")."""
         self.objects = dict(state.objects)
         self.people = dict(state.people)
         self.rooms = list(state.rooms)
@@ -126,7 +98,7 @@ class Grounder:
         self._last_animal: tuple[str, int] | None = None
         self._request = request
         self._user_id: str | None = None
-        self._names = {p.id: _words_of(p.id, p.name, p.role) for p in self.people.values()}
+        self._names = {p.id: words_of(p.id, p.name, p.role) for p in self.people.values()}
 
     # The scene with what grounding added.
     def scene(self) -> WorldState:
@@ -138,41 +110,7 @@ class Grounder:
         return base.evolve(objects=self.objects, people=self.people, rooms=tuple(self.rooms),
                            version=base.version)
 
-    @property
-    def user_id(self) -> str:
-        """The person giving the command: the profile's person, else one added on first use
-        (an adult unless the profile says otherwise; where they are is unknown)."""
-        if self._user_id is None:
-            self._user_id = self._user(self._request)
-        return self._user_id
-
-    def _user(self, request: GateRequest) -> str:
-        user = request.user
-        if user is not None and user.person_id and user.person_id in self.people:
-            return user.person_id
-        age = user.age_group if user is not None and user.age_group else "adult"
-        properties: dict[str, object] = {"age_group": age}
-        if user is not None:
-            properties.update({k: v for k, v in (("mobility", user.mobility),
-                               ("cognitive_state", user.cognitive_state),
-                               ("allergies", user.allergies)) if v is not None})
-        self.people[USER_ID] = PersonState(id=USER_ID, role="user",
-                                           properties=frozen_mapping(properties))
-        self._names[USER_ID] = {"user", "me"}
-        return USER_ID
-
-    def names_of_people(self) -> set[str]:
-        """Every word that names a person of the scene (ids, names, roles)."""
-        return set().union(*self._names.values()) if self._names else set()
-
-    # Entry points.
-    def person(self, phrase: NounPhrase) -> Referent:
-        """A phrase that must name a person (a recipient, someone escorted)."""
-        found = self._person(phrase) or self._animal(phrase)
-        if found is not None:
-            return found
-        return self._new_person(phrase)
-
+    # Entry points (`person` is in PeopleGrounding).
     def _owners_one(self, phrase: NounPhrase) -> Referent | None:
         """"mum's" after "his heart tablets": the owner's thing of the kind last named, or the
         one thing the owner has; None when neither is found."""
@@ -185,34 +123,17 @@ class Grounder:
         self.last_object = self.last_single = (owned[0],)
         return Referent(phrase, "object", (owned[0],))
 
-    def _possessor(self, possessor: str) -> Referent | None:
-        """The person a possessor names ("her", "mum", "Sam")."""
-        return self._person(NounPhrase(possessor, head=possessor, pronoun=possessor if (
-            possessor in ("me", "him", "her", "them", "us")) else None))
-
     def _owned_by(self, ids: list[str], possessor: str) -> list[str]:
         """The objects among `ids` whose `owner` is the person the possessor names ("mum",
         "her", "Sam")."""
         owner = self._possessor(possessor)
-        names = _words_of(possessor, *(owner.ids if owner else ()))
+        names = words_of(possessor, *(owner.ids if owner else ()))
         if owner is not None and owner.ids:
             person = self.people[owner.ids[0]]
-            names |= _words_of(person.name, person.role)
-        names -= _GENERIC  # "person" in "person_mum" names nobody in particular
-        return [i for i in ids if _words_of(str(self.objects[i].properties.get("owner", "")))
+            names |= words_of(person.name, person.role)
+        names -= GENERIC_WORDS  # "person" in "person_mum" names nobody in particular
+        return [i for i in ids if words_of(str(self.objects[i].properties.get("owner", "")))
                 & names]
-
-    def _animal(self, phrase: NounPhrase) -> Referent | None:
-        """A pet the scene lists, named or by its kind ("Biscuit", "the dog")."""
-        aliased = self._pet_names.get(phrase.phrase)
-        if aliased is not None:
-            return Referent(phrase, "object", (aliased,))
-        words = _words_of(phrase.phrase or phrase.text)
-        found = tuple(i for i, o in self.objects.items()
-                      if self._base.value("animal", (i,)) is True and words & (_words_of(
-                          o.name, o.type, *(str(o.properties.get(k, "")) for k in (
-                              "name", "species"))) - _GENERIC))
-        return Referent(phrase, "object", found[:1]) if found else None
 
     def any(self, phrase: NounPhrase, *, place: bool = False) -> Referent:
         """A phrase that may name an object, a person, a room or a substance. A place (a
@@ -298,62 +219,6 @@ class Grounder:
         return room
 
     # People.
-    def _person(self, phrase: NounPhrase) -> Referent | None:
-        word = phrase.pronoun or phrase.phrase
-        if word in ("me", "i", "myself", "us", "we"):
-            return self._remember_person(Referent(phrase, "person", (self.user_id,)))
-        pet = self._last_animal
-        if phrase.pronoun in ("him", "her") and pet is not None and pet[1] > self._last_person_at:
-            return Referent(phrase, "object", (pet[0],))
-        if phrase.pronoun in ("him", "her", "them", "himself", "herself"):
-            gender = {"him": "male", "himself": "male", "her": "female",
-                      "herself": "female"}.get(phrase.pronoun)
-            last = self.last_person.get(gender) or (self.last_person.get(None)
-                                                    if gender is None else None)
-            if last is not None:
-                return Referent(phrase, "person", (last,))
-            matches = [p for p in self.people if p != self._user_id
-                       and (gender is None or self._gender(p) in (gender, None))]
-            if len(matches) == 1:
-                return self._remember_person(Referent(phrase, "person", (matches[0],)))
-            if matches:
-                return Referent(phrase, "person", (), tuple(matches))
-            return None
-        if phrase.pronoun in ("everyone", "everybody", "people"):
-            ids = tuple(p for p in self.people if p != self._user_id)
-            return Referent(phrase, "person", ids) if ids else None
-        if not phrase.head:
-            return None
-        wanted = _words_of(phrase.phrase)
-        matches = [pid for pid, names in self._names.items() if wanted and wanted <= names]
-        if not matches and not self._names_a_product(phrase):
-            matches = [pid for pid, names in self._names.items() if phrase.head in names
-                       or singular(phrase.head) in names]
-        if not matches:
-            info = self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
-                phrase.head)
-            if info is None and phrase.phrase.split()[0] in TITLES:
-                return self._titled(phrase)
-            if info is None and phrase.phrase in self._given_names:
-                return self._unnamed(phrase, gender=None, kin=True)
-            if info is None or info.is_user or self._names_a_product(phrase):
-                return None
-            matches = [p.id for p in self.people.values() if info.age_group
-                       and p.properties.get("age_group") == info.age_group
-                       and info.role in ("baby", "toddler", "child", "teen")]
-            if not matches:
-                matches = [p.id for p in self.people.values() if self._same_kind(p.role, info)]
-            if not matches:
-                return None
-        ids = tuple(matches[:MAX_GROUP]) if (phrase.every or (phrase.head.endswith("s")
-                                             and len(matches) > 1)) else tuple(matches[:1])
-        if len(matches) > 1 and len(ids) == 1 and not phrase.every:
-            return Referent(phrase, "person", (), tuple(matches))
-        titled = TITLES.get(phrase.phrase.split()[0]) if phrase.phrase else None
-        if titled is not None and len(ids) == 1:
-            self.last_person[titled] = ids[0]  # "Mrs Ade ... her arm": the title says who
-        return self._remember_person(Referent(phrase, "person", ids))
-
     def _program_appliance(self) -> str | None:
         """The machine a program or setting belongs to: the last one named, else the only one
         the scene has."""
@@ -370,86 +235,23 @@ class Grounder:
         cleaner" is the bottle that holds it, not a cleaner by trade."""
         wanted = set(phrase.modifiers)
         return bool(wanted) and any(
-            wanted <= _words_of(o.id, o.name, o.type, str(o.properties.get("contents") or ""))
+            wanted <= words_of(o.id, o.name, o.type, str(o.properties.get("contents") or ""))
             for o in map(self.objects.__getitem__, self._object_matches(phrase)))
 
-    def _same_kind(self, role: str | None, wanted: PersonWord) -> bool:
-        """Whether a scene role is another word for the same kind of person ("grandad" and
-        a "grandfather", never a "grandmother")."""
-        info = self.lexicon.people.get((role or "").lower())
-        return info is not None and info.role == wanted.role and not info.is_user and (
-            info.gender is None or wanted.gender is None or info.gender == wanted.gender)
-
-    def _titled(self, phrase: NounPhrase) -> Referent | None:
-        """ "Mr Adeyemi" when the scene lists nobody by that name: the one unnamed person of
-        that title's gender who is no kin of the speaker (see `_unnamed`)."""
-        return self._unnamed(phrase, TITLES[phrase.phrase.split()[0]], kin=False)
-
-    def _unnamed(self, phrase: NounPhrase, gender: str | None, *, kin: bool) -> Referent | None:
-        """A name the scene lists for nobody: the one person the scene describes without a
-        name (the caller described who is there); several are a question, none a person the
-        scene lacks."""
-        user = self._request.user
-        speaker = user.person_id if user is not None and user.person_id else self._user_id
-        unnamed = [pid for pid, person in self.people.items() if pid != speaker
-                   and not person.name and not person.properties.get("name")
-                   and (kin or not self._is_kin(person.role))
-                   and (gender is None or self._gender(pid) in (gender, None))]
-        if len(unnamed) == 1:
-            if gender is not None:  # "Mr Dunn ... shake him": the title says who "him" is
-                self.last_person[gender] = unnamed[0]
-            return self._remember_person(Referent(phrase, "person", (unnamed[0],)))
-        return Referent(phrase, "person", (), tuple(unnamed)) if unnamed else None
-
-    def _is_kin(self, role: str | None) -> bool:
-        info = self.lexicon.people.get((role or "").lower())
-        return info is not None and info.kin
-
-    def _gender(self, person_id: str) -> str | None:
-        person = self.people[person_id]
-        for word in (person.role, person.name):
-            if word:
-                info = self.lexicon.people.get(word.lower())
-                if info is not None and info.gender:
-                    return info.gender
-        gender = person.properties.get("gender")
-        return gender if isinstance(gender, str) else None
-
-    def _remember_person(self, referent: Referent) -> Referent:
-        self._mentions += 1
-        self._last_person_at = self._mentions
-        for person_id in referent.ids:
-            self.last_person[None] = person_id
-            gender = self._gender(person_id)
-            if gender:
-                self.last_person[gender] = person_id
-        return referent
-
-    def _new_person(self, phrase: NounPhrase) -> Referent:
-        role = phrase.phrase or phrase.text or "person"
-        info = self.lexicon.people.get(role) or self.lexicon.people.get(phrase.head)
-        properties = {"age_group": info.age_group} if info is not None and info.age_group else {}
-        person_id = f"new_{normalize_type(role) or 'person'}"
-        self.people[person_id] = PersonState(id=person_id, role=role,
-                                             properties=frozen_mapping(properties))
-        self._names[person_id] = _words_of(role)
-        return self._remember_person(Referent(phrase, "person", (person_id,), new=True))
-
-    # Objects.
     def _object_matches(self, phrase: NounPhrase) -> list[str]:
         if not phrase.head:
             return []
         named = [i for i in self.objects if "_" in i and i.lower() in phrase.text.split()]
         if named:
             return named  # "the high cupboard cabinet_high_1": an id the caller wrote out
-        wanted = _words_of(phrase.phrase)
+        wanted = words_of(phrase.phrase)
         head = singular(phrase.head)
         concept = concept_of(phrase.phrase)
         kind = type_info(phrase.phrase)
         exact, typed = [], []
         for obj in self.objects.values():
-            names = _words_of(obj.id, obj.name)
-            type_words = _words_of(obj.type, obj.kind.name)
+            names = words_of(obj.id, obj.name)
+            type_words = words_of(obj.type, obj.kind.name)
             if wanted <= names or normalize_type(phrase.phrase) == normalize_type(obj.id):
                 exact.append(obj.id)
             elif head in type_words or head in names or normalize_type(
@@ -465,7 +267,7 @@ class Grounder:
             # strobe, a kind of light by the last word of its type
             found = [o.id for o in self.objects.values()
                      if _CAMEL.sub(" ", o.type).split()[-1].lower() == head
-                     and phrase.modifiers[0] in _words_of(o.id, o.name)]
+                     and phrase.modifiers[0] in words_of(o.id, o.name)]
         if phrase.contents:
             # "the cup of tea" when the tea is in a mug (and the cup is empty): the vessel
             # holding what was named
@@ -477,7 +279,7 @@ class Grounder:
 
     def _holds_substance(self, obj: ObjectState, word: str) -> bool:
         contents = obj.facts.get("contents", obj.properties.get("contents"))
-        return isinstance(contents, str) and word in _words_of(contents)
+        return isinstance(contents, str) and word in words_of(contents)
 
     def _narrow(self, ids: list[str], phrase: NounPhrase) -> list[str]:
         kept = ids
@@ -489,7 +291,7 @@ class Grounder:
                     not wanted)]
                 kept = fits or possible or kept
                 continue
-            named = [i for i in kept if modifier in _words_of(
+            named = [i for i in kept if modifier in words_of(
                 i, self.objects[i].name, self.objects[i].type,
                 *(str(v) for v in self.objects[i].properties.values()))]
             kept = named or kept
@@ -547,18 +349,18 @@ class Grounder:
     def remember(self, text: str) -> None:
         """Note what a remark names ("the iron's still on - switch it off"): scene things only,
         never new ones, so a later pronoun can point to them."""
-        words = _words_of(text)
+        words = words_of(text)
         order = re.findall(r"[a-z]+", text.lower())
         named: list[tuple[int, str]] = []
         for obj in self.objects.values():
             type_head = singular(_CAMEL.sub(" ", obj.type).split()[-1].lower()) if obj.type \
                 else ""
-            shared = words & _words_of(obj.type, obj.name) - _GENERIC
-            if shared or (type_head and type_head not in _GENERIC and type_head in words):
+            shared = words & words_of(obj.type, obj.name) - GENERIC_WORDS
+            if shared or (type_head and type_head not in GENERIC_WORDS and type_head in words):
                 first = min((order.index(w) for w in shared | {type_head} if w in order),
                             default=len(order))
                 named.append((first, obj.id))
-                if obj.name and words & _words_of(obj.name) and \
+                if obj.name and words & words_of(obj.name) and \
                         self._base.value("animal", (obj.id,)) is True:
                     self._mentions += 1
                     self._last_animal = (obj.id, self._mentions)
@@ -569,7 +371,7 @@ class Grounder:
         if not self.last_object:
             self._remember_by_kind(text)
         for person_id, names in self._names.items():
-            if words & names - _GENERIC:
+            if words & names - GENERIC_WORDS:
                 self._remember_person(Referent(NounPhrase(text), "person", (person_id,)))
 
     def _remember_by_kind(self, text: str) -> None:
@@ -577,7 +379,7 @@ class Grounder:
         exactly one scene object of that kind, for the "it" of the next order."""
         for word in reversed(re.findall(r"[a-z]+", text.lower())):
             concept = concept_of(word)
-            if concept is None or word in _GENERIC:
+            if concept is None or word in GENERIC_WORDS:
                 continue
             found = [i for i, o in self.objects.items() if concept_of(o.type) == concept
                      or o.type in concept.types]

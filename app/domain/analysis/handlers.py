@@ -9,8 +9,8 @@ in `recipes.py`. Fails: never; a handler whose arguments do not fit adds no step
 
 from __future__ import annotations
 
-from app.domain.analysis.grounding import Referent
 from app.domain.analysis.recipes import RECIPES, empty_container
+from app.domain.analysis.referents import Referent
 from app.domain.analysis.schemas import DECLARED_SCHEMAS, NEXT_TO, Grounded
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.object_types import CONTAINER_TYPES, normalize_type

@@ -17,7 +17,7 @@ from app.domain.world.object_types import normalize_type
 from app.domain.world.substances import substance_trait
 
 if TYPE_CHECKING:
-    from app.domain.analysis.grounding import Referent
+    from app.domain.analysis.referents import Referent
     from app.domain.analysis.schemas import Grounded
     from app.domain.analysis.steps import PlanBuilder
 
