@@ -19,7 +19,7 @@ from dataclasses import replace
 
 from app.domain.analysis.grounding_people import PeopleGrounding
 from app.domain.analysis.lexicon import Lexicon
-from app.domain.analysis.phrases import BODY_PARTS, NounPhrase
+from app.domain.analysis.phrases import BODY_PARTS, PROGRAM_NOUNS, NounPhrase
 from app.domain.analysis.referents import (
     GENERIC_WORDS,
     MAX_GROUP,
@@ -49,7 +49,7 @@ _CLAUSE_MARKERS = frozenset({"that", "which", "who", "whom", "whose", "where", "
 _EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
 _ROBOT_PRONOUNS = frozenset({"yourself", "you", "yourselves"})
 # "a 40 degree cycle", "medium heat": a run of a machine, named by its setting.
-_PROGRAMS = frozenset({"cycle", "programme", "program", "wash", "setting", "heat", "mode"})
+_PROGRAMS = PROGRAM_NOUNS | {"heat"}
 _PROGRAM_MACHINES = frozenset({"washingmachine", "washer", "dishwasher", "clothesdryer", "dryer",
                                "tumbledryer", "washerdryer"})
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")

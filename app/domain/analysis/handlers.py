@@ -10,7 +10,6 @@ in `recipes.py`. Fails: never; a handler whose arguments do not fit adds no step
 from __future__ import annotations
 
 from app.domain.analysis.recipes import RECIPES, empty_container
-from app.domain.analysis.referents import Referent
 from app.domain.analysis.schemas import DECLARED_SCHEMAS, NEXT_TO, Grounded
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
@@ -220,28 +219,11 @@ def _simple(action: str, cleanup: str | None = None):  # type: ignore[no-untyped
     return handler
 
 
-def _switchable(builder: PlanBuilder, obj: str) -> bool:
-    kind = builder.state.objects[obj].kind
-    return kind.flag("toggleable") is True or kind.trait("electrical") is True
-
-
-def _switched_by_pronoun(builder: PlanBuilder, ref: Referent) -> tuple[str, ...]:
-    """ "Tablet in, and start it": "it" is the last thing named that can be switched on,
-    not the tablet; empty when the pronoun's own referent can be switched."""
-    if ref.phrase.pronoun is None or not ref.ids or any(
-            i in builder.state.objects and _switchable(builder, i) for i in ref.ids):
-        return ()
-    named = [i for i in reversed(builder.grounder.named_objects)
-             if i in builder.state.objects and _switchable(builder, i)]
-    return tuple(named[:1])
-
-
 def _switch(on: bool):  # type: ignore[no-untyped-def]
     def handler(builder: PlanBuilder, grounded: Grounded) -> None:
         # "Turn off the stove": every burner the words fit (switching off more is harmless).
         targets = [i for r in grounded.objects if r.kind == "object"
-                   for i in (_switched_by_pronoun(builder, r) or (
-                       r.candidates or r.ids if not on else r.ids))]
+                   for i in (r.candidates or r.ids if not on else r.ids)]
         for obj in dict.fromkeys(targets):
             builder.switch(obj, on)
     return handler
@@ -340,8 +322,8 @@ def _feed(builder: PlanBuilder, grounded: Grounded) -> None:
                                and grounded.instrument.id else [])
     for person in people:
         pet = builder.state.entity_type(person) == "object"
-        bowl = builder.find_type(*_PET_BOWLS, room=builder.state.room_of(person)) or \
-            builder.find_type(*_PET_BOWLS) if pet else None
+        bowl = (builder.find_type(*_PET_BOWLS, room=builder.state.room_of(person))
+                or builder.find_type(*_PET_BOWLS)) if pet else None
         for food in foods:
             if pet:  # a pet eats from its bowl, or from the floor in front of it
                 builder.place(food, bowl or person, relation="in" if bowl else None)

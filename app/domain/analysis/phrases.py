@@ -202,6 +202,9 @@ def split_conjoined(words: list[str]) -> list[list[str]]:
     return [p for p in parts if p]
 
 
+# "a 40 degree cycle", "the eco programme": a run of a washing machine or dishwasher.
+PROGRAM_NOUNS = frozenset({"cycle", "programme", "program", "wash", "setting", "mode"})
+
 BODY_PARTS = frozenset({
     "arm", "arms", "hand", "hands", "elbow", "wrist", "shoulder", "shoulders", "leg", "legs",
     "foot", "feet", "knee", "knees", "head", "face", "neck", "back", "waist", "hip", "hips",

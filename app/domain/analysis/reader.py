@@ -22,6 +22,7 @@ from app.domain.analysis.phrases import (
     BODY_PARTS,
     PERSON_PRONOUNS,
     POSSESSIVES,
+    PROGRAM_NOUNS,
     TITLES,
     NounPhrase,
     parse_phrase,
@@ -736,8 +737,9 @@ _WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "
 _ACTION_NOUNS = {"going-over": "clean", "once-over": "clean", "spruce": "clean",
                  "tidy-up": "tidy", "wipe-down": "wipe"}
 # A washing machine's or dishwasher's programmes ("start it on eco"): a setting, not a place.
-_PROGRAMS = frozenset({"eco", "economy", "quick", "intensive", "delicate", "delicates", "cotton",
-                       "cottons", "wool", "synthetics", "normal", "auto", "rinse", "spin"})
+_PROGRAMME_NAMES = frozenset({"eco", "economy", "quick", "intensive", "delicate", "delicates",
+                              "cotton", "cottons", "wool", "synthetics", "normal", "auto",
+                              "rinse", "spin"})
 _SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
 
 
@@ -745,15 +747,12 @@ def _names_setting(chunk: list[str]) -> bool:
     """ "on low", "on eco", "on the quick cycle": how a machine is set, not where a thing goes."""
     words = [w for w in chunk if w not in ("the", "a", "its", "their", ",")]
     return bool(words) and (_is_setting(chunk[0]) or (
-        words[-1] in _PROGRAM_NOUNS and len(words) <= 3))
-
-
-_PROGRAM_NOUNS = frozenset({"cycle", "programme", "program", "wash", "setting", "mode"})
+        words[-1] in PROGRAM_NOUNS and len(words) <= 3))
 
 
 def _is_setting(word: str) -> bool:
     """A word naming how high an appliance is set ("low", "full", "180")."""
-    return word in _SETTINGS or word in _PROGRAMS or (word.isdigit() and int(word) >= 30)
+    return word in _SETTINGS or word in _PROGRAMME_NAMES or (word.isdigit() and int(word) >= 30)
 
 
 def _kept_state(words: list[str]) -> tuple[list[str], str | None]:

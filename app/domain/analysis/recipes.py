@@ -34,10 +34,10 @@ _APPLIANCE = {
     "steam": ("StoveBurner",), "barbecue": ("Oven",),
 }
 _DEFAULT_HEAT = ("Microwave", "StoveBurner", "Oven")
-_DRINKS = frozenset({"tea", "coffee", "cocoa", "chocolate", "latte", "espresso", "cappuccino",
-                     "milk"})
 _HOT_DRINKS = frozenset({"tea", "coffee", "cocoa", "chocolate", "cuppa", "latte", "espresso",
                          "cappuccino", "brew", "drink", "soup", "porridge", "milk"})
+# What a cup holds, named by the drink ("a cuppa" or "a brew" is tea).
+_DRINKS = _HOT_DRINKS - {"cuppa", "brew", "drink", "soup", "porridge"}
 
 
 def _by_vessel(builder: PlanBuilder, grounded: Grounded) -> tuple[str, ...]:

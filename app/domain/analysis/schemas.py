@@ -254,18 +254,22 @@ def _switchable_pronoun(g: Grounder, clause: Clause, ref: Referent) -> Referent:
     """ "Put the potato in the microwave and turn it on": a pronoun points to what the verb can
     apply to; a potato cannot be switched on, the place it was put in can."""
     if ref.phrase.pronoun not in ("it", "this", "that") or ref.kind != "object" or not (
-            set(clause.schemas) & {"switch_on", "switch_off"}) or g.last_place is None:
+            set(clause.schemas) & {"switch_on", "switch_off"}) or any(
+            _switchable(g, i) for i in ref.ids):
         return ref
     place = g.last_place
-    if any(_switchable(g, i) for i in ref.ids) or place.kind != "object" or not place.ids \
-            or not all(_switchable(g, i) for i in place.ids):
-        return ref
-    return Referent(ref.phrase, "object", place.ids)
+    if place is not None and place.kind == "object" and place.ids and all(
+            _switchable(g, i) for i in place.ids):
+        return Referent(ref.phrase, "object", place.ids)
+    # "tablet in, and start it": else the last thing named that can be switched
+    named = [i for i in reversed(g.named_objects) if _switchable(g, i)] if ref.ids else []
+    return Referent(ref.phrase, "object", tuple(named[:1])) if named else ref
 
 
 def _switchable(g: Grounder, obj_id: str) -> bool:
     obj = g.objects.get(obj_id)
-    return obj is not None and bool(obj.kind.flag("toggleable") or obj.kind.flag("heat_source"))
+    return obj is not None and bool(obj.kind.flag("toggleable") or obj.kind.flag("heat_source")
+                                    or obj.kind.trait("electrical"))
 
 
 # A tool whose use is a task of its own: "run the hoover round the hall" is hoovering.

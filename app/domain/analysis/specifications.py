@@ -45,7 +45,7 @@ def ingredients(text: str) -> list[str] | None:
     """The substances a verbless specification adds ("milk, one sugar", "milky, no sugar",
     "extra jam"), or None when the words are more than a specification. Negated substances
     ("no sugar") add nothing."""
-    words = [w for w in re.findall(r"[a-z]+", text.lower())]
+    words = re.findall(r"[a-z]+", text.lower())
     substances = [w for w in words if w not in _AMOUNTS and any(
         substance_trait(w, t) is not None for t in ("food", "liquid"))]
     if not substances or any(w not in _AMOUNTS and w not in substances for w in words):
