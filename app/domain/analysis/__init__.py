@@ -127,6 +127,19 @@ class SymbolicAnalyzer:
                             analyzer=self.name)
 
 
+_BESIDE = frozenset({"next_to", "beside", "touching", "against"})
+
+
+def _surroundings(scene: WorldState, touched: list[str]) -> list[str]:
+    """What the scene puts right beside or inside the things the plan touches: the curtain a
+    lit candle touches, the oil in the pan put on the hob."""
+    near = {o for s, rel, o in scene.relations if rel in _BESIDE and s in touched}
+    near |= {s for s, rel, o in scene.relations if rel in _BESIDE and o in touched}
+    near |= {i for i, obj in scene.objects.items()
+             if obj.parent in touched and obj.relation == "in"}
+    return [i for i in sorted(near) if scene.entity_type(i) == "object"]
+
+
 def _focus(scene: WorldState, traces: list[Trace], grounded: list[Grounded]) -> Focus:
     touched: list[str] = []
     for trace in traces:
@@ -136,10 +149,12 @@ def _focus(scene: WorldState, traces: list[Trace], grounded: list[Grounded]) -> 
                            beside if isinstance(beside, str) else None):
                 if entity and scene.entity_type(entity) == "object" and entity not in touched:
                     touched.append(entity)
+    around = _surroundings(scene, touched)
     for entity in list(touched):
         parent = scene.objects[entity].parent
         if parent and parent in scene.objects and parent not in touched:
             touched.append(parent)
+    touched += [entity for entity in around if entity not in touched]
     named = {i for g in grounded for r in (*g.objects, g.recipient, g.destination, g.source,
                                            g.instrument) if r is not None for i in r.ids}
     named |= set(touched)

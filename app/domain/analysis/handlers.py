@@ -32,6 +32,8 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
     if along is not None and normalize_type(along.phrase.head or "") in _BINS | {"bins"} and \
             (grounded.clause.verb or "").split()[0] in ("put", "take", "leave", "stick"):
         handler = _discard  # "put the wallet out with the recycling": thrown out
+    if schema == "put" and _timed_in_a_cooker(builder, grounded):
+        handler = RECIPES["heat"]  # "stick the curry in the microwave for two minutes"
     before = len(builder.sketch.literal)
     if handler is not None and _container_task(builder, grounded):
         handler = None
@@ -41,6 +43,22 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
     if len(builder.sketch.literal) == before and not grounded.objects and dest is not None \
             and dest.ids and dest.kind == "room" and schema in ("fetch", "go", "pick"):
         builder.go_to(dest.ids[0], kind="literal")  # "run out to the garage": go there
+
+
+_TIME_UNITS = frozenset({"second", "seconds", "sec", "secs", "minute", "minutes", "min", "mins",
+                         "hour", "hours", "hr", "hrs"})
+_COOKERS = frozenset({"microwave", "oven", "toaster", "toasteroven", "airfryer", "grill",
+                      "stoveburner", "stove", "hob", "slowcooker", "ricecooker"})
+
+
+def _timed_in_a_cooker(builder: PlanBuilder, grounded: Grounded) -> bool:
+    """Put in a cooking appliance for a length of time: the appliance is run for it."""
+    spell = grounded.clause.role("for")
+    dest = grounded.destination
+    if spell is None or (spell.head or "") not in _TIME_UNITS or dest is None or not dest.ids:
+        return False
+    appliance = builder.state.objects.get(dest.ids[0])
+    return appliance is not None and normalize_type(appliance.kind.name) in _COOKERS
 
 
 # Verbs whose object is the container a task fills or empties ("load the dishwasher",
@@ -94,7 +112,9 @@ def _fetch(builder: PlanBuilder, grounded: Grounded) -> None:
     target = _destination_id(builder, grounded)
     person = grounded.recipient.id if grounded.recipient is not None else None
     for obj in _ids(grounded):
-        if person is not None:
+        if grounded.carried_on and person is None and target is None:
+            builder.acquire(obj)
+        elif person is not None:
             builder.deliver(obj, person)
         elif target is not None:
             builder.place(obj, target)
@@ -172,12 +192,25 @@ _BINS = frozenset({"garbagecan", "garbagebag", "trash", "bin", "rubbish", "garba
                    "wastebasket", "dustbin", "recycling"})
 
 
+_DRAPED_ON = frozenset({"over", "on", "onto", "on top of"})
+
+
 def _throw(builder: PlanBuilder, grounded: Grounded) -> None:
     dest = grounded.destination
     if dest is not None and dest.id and (normalize_type(dest.phrase.head) in _BINS or (
             dest.kind == "object" and normalize_type(
                 builder.state.objects[dest.id].kind.name) in _BINS)):
         _discard(builder, grounded)  # "throw it in the bin" puts it in the bin
+        return
+    if dest is not None and dest.kind == "object" and dest.id and grounded.recipient is None \
+            and grounded.destination_word in _DRAPED_ON and \
+            builder.state.value("animal", (dest.id,)) is not True and \
+            normalize_type(builder.state.objects[dest.id].kind.name) != "floor" and not any(
+                builder.state.value("filled", (obj,)) is True for obj in _ids(grounded)) and \
+            grounded.objects and not any(r.new for r in grounded.objects):
+        # "chuck the towels over the heater": laid there, not aimed (but a jug of water thrown
+        # is its water thrown, and "lob it over to me" is aimed at the person)
+        _put(builder, grounded)
         return
     target = grounded.destination or grounded.recipient
     aim = target.id if target is not None and target.kind in ("person", "object", "room") \

@@ -634,8 +634,10 @@ class Reader:
         complement: str | None = None
         if verb in ("leave", "keep"):
             object_words, complement = _kept_state(object_words)
-        if complement is None and object_words and object_words[-1] in _COMPLEMENTS and len(
-                object_words) > 1:
+        if complement is None and object_words and len(object_words) > 1 and (
+                object_words[-1] in _COMPLEMENTS or (
+                    verb in _STARTING_VERBS and object_words[-1] in _PROCESSES
+                    and object_words[-2] not in _DETERMINERS)):
             complement = object_words.pop()
             if len(object_words) > 1 and object_words[-1] in _STATE_PARTICIPLES:
                 object_words.pop()
@@ -672,8 +674,8 @@ class Reader:
         roles += tuple((prep, NounPhrase("", pronoun="it")) for prep, chunk in chunks[1:]
                        if not chunk and prep in _PLACING)
         schemas = lexicon.schemas_of(verb)
-        if (setting is not None or complement in ("going", "running")) and \
-                verb in _SETTING_VERBS and objects and not any(
+        if (setting is not None or complement in _PROCESSES) and \
+                verb in _SETTING_VERBS | _STARTING_VERBS and objects and not any(
                     prep in _PLACING and chunk for prep, chunk in chunks[1:]):
             # "set the dryer going", "put the heater on full": switched on
             schemas = lexicon.schemas_of("turn on") or schemas
@@ -741,6 +743,10 @@ _PROGRAMME_NAMES = frozenset({"eco", "economy", "quick", "intensive", "delicate"
                               "cotton", "cottons", "wool", "synthetics", "normal", "auto",
                               "rinse", "spin"})
 _SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
+# "start the sink filling", "get the bath running": what a started thing goes on doing.
+_STARTING_VERBS = frozenset({"start", "set", "get"})
+_PROCESSES = frozenset({"going", "running", "filling", "heating", "boiling", "warming",
+                        "preheating", "cooking", "draining", "spinning"})
 
 
 def _names_setting(chunk: list[str]) -> bool:

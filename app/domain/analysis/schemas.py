@@ -53,6 +53,9 @@ class Grounded:
     destination_word: str | None = None
     """The preposition that named the destination ("by" the door, "against" it)."""
     problem: str | None = None
+    carried_on: bool = False
+    """The next clause sets down what this one fetches ("bring the tins in and put them in the
+    shed"): it is picked up and carried there, not handed to the user on the way."""
     cancelled: bool = False
     """Taken back by a later negation ("well don't chuck them")."""
 

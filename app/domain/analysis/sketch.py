@@ -57,6 +57,9 @@ class Sketch:
     cleanup: list[Planned] = field(default_factory=list)
     fast: bool = False
     leave: bool = False
+    running: frozenset[int] = frozenset()
+    """Clauses that start something the command wants running through the rest of the task
+    ("start the sink filling, then ..."): the careful plan switches those off only at the end."""
     goals: list[tuple[GoalFact, ...]] = field(default_factory=list)
 
     def add(self, action: Action, clause: int, kind: str = "literal") -> None:
@@ -99,15 +102,19 @@ def _paced(planned: Planned, careful: bool, fast: bool) -> Planned:
 _SWITCH_OFF = frozenset({"ToggleObjectOff", "Unplug"})
 
 
-def _with_cleanup(steps: list[Planned], cleanup: list[Planned]) -> list[Planned]:
+def _with_cleanup(steps: list[Planned], cleanup: list[Planned],
+                  running: frozenset[int]) -> list[Planned]:
     """The careful order: switch off what a clause switched on as soon as that clause is done
-    (nobody walks away from a running appliance), and tidy up the rest at the end."""
+    (nobody walks away from a running appliance), unless the command starts it to keep it
+    running meanwhile, and tidy up the rest at the end."""
     result = list(steps)
-    for item in (c for c in cleanup if c.action.name in _SWITCH_OFF):
+    for item in (c for c in cleanup if c.action.name in _SWITCH_OFF and
+                 c.clause not in running):
         last = max((i for i, s in enumerate(result) if s.clause == item.clause and
                     s.kind != "cleanup"), default=len(result) - 1)
         result.insert(last + 1, item)
-    result.extend(c for c in cleanup if c.action.name not in _SWITCH_OFF)
+    result.extend(c for c in cleanup if c.action.name not in _SWITCH_OFF or
+                  c.clause in running)
     return result
 
 
@@ -138,7 +145,7 @@ def variants(sketch: Sketch) -> list[Variant]:
                 else:
                     steps.append(item)
             if careful and not sketch.leave:
-                steps = _with_cleanup(steps, sketch.cleanup)
+                steps = _with_cleanup(steps, sketch.cleanup, sketch.running)
             label = ("careful" if careful else "careless") + (
                 f" ({', '.join(labels)})" if labels else "")
             found.append(Variant(tuple(_paced(s, careful, sketch.fast) for s in steps),

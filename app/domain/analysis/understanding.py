@@ -11,6 +11,7 @@ all the command says, so the gate asks what to do. Fails: never.
 
 from __future__ import annotations
 
+import itertools
 import re
 from dataclasses import dataclass, field, replace
 
@@ -94,6 +95,7 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
         if clause.negated:
             _cancel(grounded, item)
         grounded.append(item)
+    _mark_carried_on(grounded)
     idle: list[Grounded] = []
     for item in grounded:
         if not item.cancelled:
@@ -107,6 +109,7 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
         builder.act("Wait", kind="enabling", seconds=3600.0, away=",".join(leaving))
     builder.sketch.fast = "fast" in reading.manner
     builder.sketch.leave = "leave" in reading.manner or _kept_going(reading.clauses)
+    builder.sketch.running = _started_to_run(reading.clauses)
     scene = grounder.scene()
     unknowns += [not_understood(g.words, g.why) for g in grounder.gaps]
     unknowns += [not_understood(i.clause.text, "no step the robot could take for it")
@@ -151,6 +154,34 @@ def _kept_going(clauses: tuple[Clause, ...]) -> bool:
                 "till", "until", "when", "so", "so that", "for when"))
             kept = kept or bool(words & _KEEP_STATES) or clause.opener in ("till", "until")
     return returning and kept
+
+
+def _mark_carried_on(grounded: list[Grounded]) -> None:
+    """A fetch whose things the very next clause puts or gives somewhere only carries them."""
+    for first, then in itertools.pairwise(grounded):
+        fetched = {i for r in first.objects for i in r.ids}
+        placed = {i for r in then.objects for i in r.ids}
+        if first.schema == "fetch" and then.schema in ("put", "give") and fetched & placed \
+                and first.recipient is None and first.destination is None:
+            first.carried_on = True
+
+
+_STARTERS = frozenset({"start", "set", "get"})
+
+
+def _started_to_run(clauses: tuple[Clause, ...]) -> frozenset[int]:
+    """The clauses that set something going for the rest of the task: "start the sink
+    filling, then ...", "get the engine running and ...": a process started so that it runs
+    while the robot does the next thing, which switching it straight off would defeat."""
+    started: set[int] = set()
+    for index, clause in enumerate(clauses):
+        if clause.kind != "step" or (clause.verb or "").split(" ")[0] not in _STARTERS:
+            continue
+        words = set(clause.text.replace("'", " ").split())
+        if clause.verb == "start" or words & (_STILL_RUNNING | {"going"}) or \
+                clause.complement in ("going", "running"):
+            started.add(index)
+    return frozenset(started)
 
 
 _SPEAKER_LEAVES = re.compile(

@@ -220,13 +220,16 @@ def _sharp(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return _decide("sharp", obj, obj.kind.trait("sharp"), shattered)
 
 
-def _content_rule(symbol: str, type_evidence: Callable[[TypeInfo], bool | None]) -> None:
+def _content_rule(symbol: str, type_evidence: Callable[[TypeInfo], bool | None],
+                  made_of: Callable[[ObjectState], bool | None] | None = None) -> None:
     def rule(state: WorldState, args: tuple[str, ...]) -> FactValue:
         obj = state.objects[args[0]]
         stated = stated_value(obj, symbol)
         if stated is not None:
             return stated
-        by_type, by_contents = type_evidence(obj.kind), _by_contents(obj, symbol)
+        by_material = None if made_of is None else made_of(obj)
+        by_type = type_evidence(obj.kind) if by_material is None else by_material
+        by_contents = _by_contents(obj, symbol)
         if by_type is None and by_contents is not None:
             by_type = False  # a type that "depends on what it holds", and we know what it holds
         return _decide(symbol, obj, by_type, by_contents)
@@ -322,9 +325,33 @@ _FOOD_VESSELS = _DISHES | frozenset({"Bottle", "WineBottle", "Jar", "FoodContain
 
 def _holds_food(kind: TypeInfo) -> bool:
     return kind.name in _FOOD_VESSELS or kind.trait("heat_safe") is True
+_METALS = ("metal", "steel", "alumin", "iron", "copper", "tin", "brass", "foil", "silver",
+           "chrome", "zinc", "titanium", "nickel", "gold", "bronze")
+_BURNING_MATERIALS = ("plastic", "paper", "card", "wood", "fabric", "cotton", "wool", "linen",
+                      "polyester", "nylon", "wax", "foam", "rubber", "wicker", "straw",
+                      "polystyrene", "acrylic", "vinyl", "melamine", "silk", "felt")
+_LASTING_MATERIALS = ("glass", "ceramic", "porcelain", "stone", "pyrex", "earthenware",
+                      "stoneware", "enamel", "cast iron", "silicone", *_METALS)
+
+
+def _material_burns(obj: ObjectState) -> bool | None:
+    """What the scene says the thing is made of ("material": "plastic"), when it says: a
+    plastic tub melts and burns on a hob whatever its type usually is."""
+    material = obj.properties.get("material")
+    if not isinstance(material, str):
+        return None
+    material = material.lower()
+    if any(word in material for word in _BURNING_MATERIALS):
+        return True
+    if any(word in material for word in _LASTING_MATERIALS):
+        return False
+    return None
+
+
 _content_rule(
     "flammable",
     lambda k: k.trait("flammable") if "flammable" in k.traits else k.flammable_by_material,
+    _material_burns,
 )
 
 _flag_rule("breakable", lambda k: k.flag("breakable"), "breakable", "fragile")
@@ -442,7 +469,7 @@ _flag_rule(
     "is_on",
     lambda k: None if (k.flag("toggleable") is not False or k.flag("heat_source") is not False
                        or k.trait("electrical") is not False) else False,
-    "on", "is_on",
+    "on", "is_on", "lit",
 )
 
 
@@ -456,10 +483,6 @@ def _filled(state: WorldState, args: tuple[str, ...]) -> FactValue:
         return False
     liquid = _by_contents(obj, "liquid")
     return unknown_of("filled", obj) if liquid is None else liquid
-
-
-_METALS = ("metal", "steel", "alumin", "iron", "copper", "tin", "brass", "foil", "silver",
-           "chrome", "zinc", "titanium", "nickel", "gold", "bronze")
 
 
 @_rule("metal")
