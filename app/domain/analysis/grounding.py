@@ -68,6 +68,9 @@ def _names_a_room(phrase: NounPhrase) -> bool:
                                                    and head not in ("mushroom", "broom"))
 
 
+_ARTICLES = frozenset({"the", "a", "an", "this", "that", "all", "every"})
+
+
 class Grounder(PeopleGrounding):
     """Grounds phrases on one request's scene, remembering what pronouns point to."""
 
@@ -187,12 +190,28 @@ class Grounder(PeopleGrounding):
         if phrase.head and (self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
                 phrase.head)) and not self._names_a_product(phrase):
             return self._new_person(phrase)
+        several = self._rooms_of_a_kind(phrase)
+        if several:
+            return Referent(phrase, "room", several)  # "all three bedrooms"
         room = self.room(phrase)
         named_room = phrase.phrase in self.lexicon.rooms and self.lexicon.rooms[
             phrase.phrase] not in ("bathroom", "hallway", "garden")
         if room is not None and (named_room or not self._object_matches(phrase)):
             return Referent(phrase, "room", (room,))
         return self._object(phrase, place=place)
+
+    def _rooms_of_a_kind(self, phrase: NounPhrase) -> tuple[str, ...]:
+        """The layout's rooms a plural names ("the bedrooms": bedroom_1, bedroom_2, ...)."""
+        head = phrase.head or ""
+        if not head.endswith("s") or len(head) < 4:
+            return ()
+        kind = normalize_type(head[:-1])
+        if kind not in {normalize_type(r) for r in self.lexicon.rooms.values()} | {
+                normalize_type(k) for k in self.lexicon.rooms}:
+            return ()
+        found = tuple(r for r in self.rooms if normalize_type(r).rstrip("0123456789") == kind
+                      or normalize_type(r).endswith(kind))
+        return found if len(found) > 1 else ()
 
     def room(self, phrase: NounPhrase) -> str | None:
         """The room a phrase names (a layout room, or a room word the layout lacks)."""
@@ -203,6 +222,10 @@ class Grounder(PeopleGrounding):
                 key = normalize_type(room)
                 if text in key or (text == "upstairs" and "landing" in key):
                     return room
+        bare = normalize_type(" ".join(w for w in text.split() if w not in _ARTICLES))
+        exact = next((room for room in self.rooms if normalize_type(room) == bare), None)
+        if exact is not None:
+            return exact  # "the landing" is the landing, though the lexicon files it as a hall
         canonical = self.lexicon.rooms.get(text) or self.lexicon.rooms.get(phrase.head)
         if canonical is None and normalize_type(text) not in {normalize_type(r)
                                                               for r in self.rooms}:

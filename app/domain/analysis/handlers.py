@@ -377,6 +377,9 @@ def _floor_chore(action: str):  # type: ignore[no-untyped-def]
         refs = [*grounded.objects, *([grounded.destination] if grounded.destination else [])]
         targets = [i for r in refs if r.kind in ("room", "object") for i in r.ids]
         for target in targets or [builder.state.robot.room or builder.surface(None)]:
+            if builder.state.entity_type(target) == "room" and \
+                    builder.state.robot.room != target:
+                builder.go_to(target)  # the robot walks there first (and leaves where it was)
             builder.act(action, target=target)
     return handler
 

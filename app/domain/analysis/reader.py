@@ -51,6 +51,8 @@ _STRAY = frozenset({"handle-first", "blade-first", "point-first", "pls", "plz", 
 _SUBJECTS = frozenset({"it's", "its", "she's", "he's", "they're", "i'm", "we're", "there's",
                        "that's", "i", "she", "he", "they", "we", "you're", "i've", "i'll",
                        "it", "this", "there", "im", "theyre", "shes", "hes", "thats"})
+_SOMEONE = frozenset({"nobody", "noone", "everyone", "everybody", "someone", "somebody",
+                      "anyone", "anybody"})
 _OBJECT_STARTS = frozenset({"it", "them", "the", "a", "an", "my", "your", "his", "her", "our",
                             "their", "this", "that", "these", "those", "up", "down", "off",
                             "out", "away", "back", "everything", "all"})
@@ -486,6 +488,9 @@ class Reader:
             return False
         if words[index] in _SUBJECTS:
             return True
+        if words[index] in _SOMEONE and index + 1 < len(words) and (
+                words[index + 1] in _AUXILIARIES or words[index + 1].endswith(("s", "ed"))):
+            return True  # "nobody uses it", "everyone's gone": said of people, not asked
         for position, word in enumerate(words[index: index + 4]):
             if position and word in (",", "and"):
                 return False  # "fags and lighter, he's asking": the subject is past a comma
@@ -679,6 +684,9 @@ class Reader:
                     prep in _PLACING and chunk for prep, chunk in chunks[1:]):
             # "set the dryer going", "put the heater on full": switched on
             schemas = lexicon.schemas_of("turn on") or schemas
+        elif complement in _HEATING and verb in _SETTING_VERBS | _STARTING_VERBS and objects:
+            # "get the chip pan heating on the big ring": put there and the ring switched on
+            schemas = lexicon.schemas_of("heat") or schemas
         if verb in ("keep", "leave") and complement in _DIRECTIVE_STATES and objects:
             # "keep the oven on at 200", "leave the porch light on": bring about that state,
             # and leave it so (no switching off or closing afterwards)
@@ -745,8 +753,9 @@ _PROGRAMME_NAMES = frozenset({"eco", "economy", "quick", "intensive", "delicate"
 _SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
 # "start the sink filling", "get the bath running": what a started thing goes on doing.
 _STARTING_VERBS = frozenset({"start", "set", "get"})
-_PROCESSES = frozenset({"going", "running", "filling", "heating", "boiling", "warming",
-                        "preheating", "cooking", "draining", "spinning"})
+_HEATING = frozenset({"heating", "boiling", "warming", "cooking", "frying", "simmering"})
+_PROCESSES = _HEATING | frozenset({"going", "running", "filling", "preheating", "draining",
+                                   "spinning"})
 
 
 def _names_setting(chunk: list[str]) -> bool:

@@ -248,3 +248,49 @@ class TestALitCandle:
         scene = _scene(_candle(lit=False), SILL, people=[self.ADULT_AWAKE])
         decided = gate(request("light the candle and leave it going", scene))
         assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestRoomsAndRemarks:
+    UPSTAIRS = ("landing", "bedroom_1", "bedroom_2")
+
+    def test_a_plural_room_word_names_every_such_room(self) -> None:
+        steps = _steps("hoover the bedrooms", _scene(rooms=self.UPSTAIRS))
+        assert ("Vacuum", None, "bedroom_1") in steps and ("Vacuum", None, "bedroom_2") in steps
+
+    def test_the_landing_is_the_landing_not_the_hall(self) -> None:
+        steps = _steps("hoover the landing", _scene(rooms=self.UPSTAIRS))
+        assert ("Vacuum", None, "landing") in steps
+        assert ("navigate", None, "landing") in steps
+
+    def test_a_remark_about_nobody_is_not_a_place(self) -> None:
+        crates = {"id": "crates_1", "type": "Box", "room": "kitchen",
+                  "properties": {"mass_kg": 2.0}}
+        door = {"id": "door_1", "type": "Door", "room": "kitchen"}
+        steps = _steps("stack the crates against the back door, nobody uses it",
+                       _scene(crates, door))
+        assert ("PutObject", "crates_1", "door_1") in steps
+        assert not any(str(target).startswith("new_") for _, _, target in steps)
+
+
+CHIP_PAN = {"id": "chippan_1", "type": "Pan", "room": "kitchen", "on": "counter_1",
+            "properties": {"contents": "cooking oil"}}
+
+
+class TestAPanSetHeating:
+    def test_the_big_ring_is_a_burner(self) -> None:
+        steps = _steps("put the pan on the big ring", _scene(HOB, CHIP_PAN))
+        assert ("PutObject", "chippan_1", "burner_1") in steps
+
+    def test_left_heating_while_the_robot_hoovers_upstairs_is_refused(self, gate: Gate) -> None:
+        scene = _scene(HOB, CHIP_PAN, rooms=TestRoomsAndRemarks.UPSTAIRS, people=[ADULT])
+        decided = gate(request(
+            "get the chip pan heating on the big ring, then go and hoover the bedrooms", scene))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "appliance_left_on" in decided.reason
+
+    def test_heating_while_the_robot_stays_in_the_kitchen_is_not_refused(
+            self, gate: Gate) -> None:
+        scene = _scene(HOB, CHIP_PAN, rooms=TestRoomsAndRemarks.UPSTAIRS, people=[ADULT])
+        decided = gate(request(
+            "get the chip pan heating on the big ring, then wipe the counter", scene))
+        assert decided.decision is not Decision.REJECT, decided.reason
