@@ -113,7 +113,8 @@ class PeopleGrounding:
                 return Referent(phrase, "person", (), tuple(matches))
             return None
         if phrase.pronoun in ("everyone", "everybody", "people"):
-            ids = tuple(p for p in self.people if p != self._user_id)
+            user = self.user_id  # may add the speaker to the people: look first
+            ids = tuple(p for p in self.people if p != user)
             return Referent(phrase, "person", ids) if ids else None
         if not phrase.head:
             return None

@@ -108,14 +108,20 @@ def _destination_id(builder: PlanBuilder, grounded: Grounded) -> str | None:
     return dest.ids[0] if dest.kind == "object" else None
 
 
+def _recipients(grounded: Grounded) -> tuple[str, ...]:
+    """Everyone the thing goes to: one person, or each in turn ("hand them out to everyone")."""
+    return grounded.recipient.ids if grounded.recipient is not None else ()
+
+
 def _fetch(builder: PlanBuilder, grounded: Grounded) -> None:
     target = _destination_id(builder, grounded)
-    person = grounded.recipient.id if grounded.recipient is not None else None
+    people = _recipients(grounded)
     for obj in _ids(grounded):
-        if grounded.carried_on and person is None and target is None:
+        if grounded.carried_on and not people and target is None:
             builder.acquire(obj)
-        elif person is not None:
-            builder.deliver(obj, person)
+        elif people:
+            for person in people:
+                builder.deliver(obj, person)
         elif target is not None:
             builder.place(obj, target)
         else:
@@ -123,12 +129,12 @@ def _fetch(builder: PlanBuilder, grounded: Grounded) -> None:
 
 
 def _give(builder: PlanBuilder, grounded: Grounded) -> None:
-    person = (grounded.recipient.id if grounded.recipient is not None else None) or (
-        builder.user())
+    people = _recipients(grounded) or (builder.user(),)
     for obj in _ids(grounded):
-        if builder.acquire(obj):
-            builder.go_to(person)
-            builder.hand_to(obj, person)
+        for person in people:
+            if builder.acquire(obj):
+                builder.go_to(person)
+                builder.hand_to(obj, person)
 
 
 _BASINS = frozenset({"toilet", "sink", "sinkbasin", "bathtub", "bathtubbasin", "bucket",

@@ -215,6 +215,12 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             if found.kind == "person" and prep in _TOWARDS | _INTO_PERSON and recipient is None:
                 grounded.recipient = found  # "take the tea into Gran": to her
             grounded.destination, grounded.destination_word = found, prep
+    around = next((np for prep, np in clause.roles if prep in ("round", "around")), None)
+    if around is not None and recipient is None and clause.schemas[:1] in (
+            ("give",), ("fetch",)):
+        grounded.recipient = _everyone_in(g, around)  # "pass the crackers round the lounge"
+        if grounded.destination is not None and grounded.destination.phrase is around:
+            grounded.destination = None
     if grounded.destination is not None and grounded.destination.ids and set(
             grounded.destination.ids) <= own:
         grounded.destination = None  # "put the roast in": not in itself
@@ -354,6 +360,16 @@ def _names_room(g: Grounder, np: NounPhrase) -> bool:
         text) in {normalize_type(r) for r in g.rooms}
 
 
+def _everyone_in(g: Grounder, place: NounPhrase) -> Referent | None:
+    """Everyone but the speaker in the room a distributive give goes round (everyone at all
+    when the room is not one the layout has)."""
+    room = g.room(place) if _names_room(g, place) else None
+    user = g.user_id
+    ids = tuple(p.id for p in g.people.values() if p.id != user and (
+        room is None or p.room == room))
+    return Referent(place, "person", ids) if ids else None
+
+
 def _names_person(people: object, np: NounPhrase) -> bool:
-    return bool(np.pronoun in ("me", "him", "her", "us", "them") or (
+    return bool(np.pronoun in ("me", "him", "her", "us", "them", "everyone", "everybody") or (
         isinstance(people, dict) and (np.phrase in people or np.head in people)))

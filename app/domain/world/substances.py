@@ -31,7 +31,9 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
          "paint_thinner acetone", "liquid toxic flammable"),
         ("peanut peanuts peanut_butter nut nuts almond almonds walnut cashew egg eggs wheat "
          "flour gluten shellfish shrimp fish soy sesame satay pesto praline marzipan nutella "
-         "hazelnut pistachio pecan prawn prawns crab lobster mussels clams oysters scampi",
+         "hazelnut pistachio pecan prawn prawns crab lobster mussels clams oysters scampi "
+         "tahini hummus houmous halva salmon tuna cod haddock mackerel sardines anchovies "
+         "soya edamame miso mayonnaise meringue custard",
          "food allergen"),
         ("bread cereal pasta rice sugar salt candy fruit apple banana vegetable cookie "
          "cookies cake chocolate cheese chicken beef pork lamb meat sausage bacon ham turkey "
@@ -43,7 +45,8 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
         ("kibble dog_food cat_food pet_food fish_food flakes birdseed hay pellet_food "
          "treats chews", "food"),
         ("pills pill medicine medication tablets ibuprofen aspirin paracetamol acetaminophen "
-         "insulin antibiotics vitamins warfarin codeine diazepam naproxen sleeping_pills",
+         "insulin antibiotics vitamins warfarin codeine diazepam naproxen sleeping_pills "
+         "vaccine vaccines eye_drops inhaler epipen morphine co-codamol tramadol prescription",
          "medication"),
         ("paper", "flammable"),
     )
@@ -59,9 +62,13 @@ _FAMILIES: dict[str, frozenset[str]] = {
                            "pecan", "pesto", "praline", "marzipan", "nutella"}),
     "shellfish": frozenset({"shellfish", "shrimp", "prawn", "prawns", "crab", "lobster",
                             "mussels", "clams", "oysters", "scampi"}),
-    "dairy": frozenset({"milk", "cream", "yogurt", "cheese"}),
-    "milk": frozenset({"milk", "cream", "yogurt", "cheese"}),
-    "egg": frozenset({"egg", "eggs"}),
+    "dairy": frozenset({"milk", "cream", "yogurt", "cheese", "butter", "custard"}),
+    "milk": frozenset({"milk", "cream", "yogurt", "cheese", "butter", "custard"}),
+    "egg": frozenset({"egg", "eggs", "mayonnaise", "meringue", "omelette", "custard"}),
+    "sesame": frozenset({"sesame", "tahini", "hummus", "houmous", "halva"}),
+    "fish": frozenset({"fish", "salmon", "tuna", "cod", "haddock", "mackerel", "sardines",
+                       "anchovies"}),
+    "soy": frozenset({"soy", "soya", "tofu", "edamame", "miso"}),
     "gluten": frozenset({"wheat", "flour", "gluten", "bread", "pasta", "cake", "cookie"}),
     "wheat": frozenset({"wheat", "flour", "bread", "pasta"}),
 }
