@@ -45,6 +45,9 @@ _PLAN_FACTS = frozenset({"speed", "max_speed", "distance", "near"})
 # at run time, not asked.
 _ROBOT_FACTS = frozenset({"payload", "load_kg", "has_skill", "has_sensor", "recording",
                           "mass_kg", "heavy", "pickupable"})
+# Where a person is, when a severe hazard turns on it: asked even of someone the command
+# does not name.
+_WHEREABOUTS = frozenset({"outdoors"})
 SOLVER_BUDGET_MS = 500
 
 
@@ -139,6 +142,8 @@ def _asked(key: str, focus: Focus) -> bool:
     symbol, args = parse_key(key)
     if symbol in _PLAN_FACTS or symbol in _ROBOT_FACTS or "robot" in args:
         return False
+    if symbol in _WHEREABOUTS and set(args) & set(focus.people):
+        return True  # "is Grandad still out in the garden?": where someone is, worth asking
     return bool(set(args) & focus.named)
 
 

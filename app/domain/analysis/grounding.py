@@ -68,6 +68,9 @@ def _names_a_room(phrase: NounPhrase) -> bool:
                                                    and head not in ("mushroom", "broom"))
 
 
+_DOOR_KINDS = frozenset({"door", "gate", "frenchdoor", "slidingdoor"})
+_OUTSIDE_DOOR_WORDS = frozenset({"front", "back", "garden", "patio", "outside", "porch",
+                                 "side", "yard"})
 _ARTICLES = frozenset({"the", "a", "an", "this", "that", "all", "every"})
 
 
@@ -411,16 +414,23 @@ class Grounder(PeopleGrounding):
                 return
 
     def _annotate(self, ids: tuple[str, ...], phrase: NounPhrase) -> None:
-        """What the words say of where a thing is ("the top shelf" is high up)."""
+        """What the words say of where a thing is: "the top shelf" is high up; "the garden
+        door" opens to the outside."""
+        said: dict[str, bool] = {}
         high = {"top", "high", "upper", "highest", "tall"} & set(phrase.modifiers)
         low = {"bottom", "low", "lower", "lowest"} & set(phrase.modifiers)
-        if not (high or low):
+        if high or low:
+            said["elevated"] = bool(high)
+        doors = [i for i in ids if normalize_type(self.objects[i].type) in _DOOR_KINDS]
+        if doors and _OUTSIDE_DOOR_WORDS & set(phrase.modifiers) and len(doors) == len(ids):
+            said["exterior"] = True
+        if not said:
             return
         for object_id in ids:
             obj = self.objects[object_id]
-            properties = {**obj.properties, "elevated": bool(high)}
+            properties = {**obj.properties, **said}
             self.objects[object_id] = replace(obj, properties=frozen_mapping(properties))
-            self.stated[object_id] = {"elevated": bool(high)}
+            self.stated[object_id] = {**self.stated.get(object_id, {}), **said}
         self._base = self._base.evolve(objects=self.objects, version=self._base.version)
 
     def _new_object(self, phrase: NounPhrase, *, place: bool = False) -> Referent:

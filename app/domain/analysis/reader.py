@@ -70,6 +70,7 @@ _COMPLEMENTS = frozenset({"open", "shut", "closed", "on", "off", "running", "unl
 _DIRECTIVE_STATES = {"off": "turn off", "on": "turn on", "open": "open", "shut": "close",
                      "closed": "close", "locked": "lock", "unlocked": "unlock",
                      "running": "turn on", "going": "turn on"}
+_DEGREES = frozenset({"wide", "fully", "right", "half", "slightly", "partly", "properly"})
 # "leave the iron switched on": the participle before a state word belongs to the state.
 _STATE_PARTICIPLES = frozenset({"switched", "turned", "plugged", "left", "kept", "propped",
                                 "wedged", "standing"})
@@ -651,6 +652,8 @@ class Reader:
                     w for w in chunks[1][1] if w != ","]:
             object_words.pop()  # "the iron switched on, on the board": "on" then a place
             complement = chunks.pop(1)[0]
+        while complement is not None and len(object_words) > 1 and object_words[-1] in _DEGREES:
+            object_words.pop()  # "leave it wide open": how open, not part of the thing
         setting = next((i for i, (prep, chunk) in enumerate(chunks[1:], 1) if prep == "on"
                         and _names_setting(chunk)), None)
         if setting is not None:

@@ -128,6 +128,8 @@ _SYMBOLS: tuple[Symbol, ...] = (
     Symbol("reachable_by", ("object", "person"), "bool",
            "the person could reach and take the object unaided"),
     Symbol("occupied", ("room",), "bool", "at least one person is in the room"),
+    Symbol("outdoors", ("entity",), "bool",
+           "the entity is outside the house: in a garden, yard, drive or street"),
     # The robot.
     Symbol("speed", ("robot",), "number",
            "the robot's current speed in m/s (unknown while moving at an unstated top speed)"),

@@ -439,6 +439,13 @@ _OUTSIDE_WORDS = frozenset({"front", "back", "garden", "patio", "porch", "exteri
                             "outer", "entrance", "street", "yard", "garage", "gate", "exit"})
 
 
+_LEADS_TO = ("opens_onto", "opens_to", "leads_to", "opens_into")
+_DOORWAY_ROOMS = frozenset({"porch", "frontdoor", "backdoor", "entrance", "entryway", "entry",
+                            "vestibule"})
+_OUTDOORS = frozenset({"road", "drive", "driveway", "pavement", "sidewalk", "outdoors",
+                       "lane", "car", "park"})
+
+
 @_rule("exterior")
 def _exterior(state: WorldState, args: tuple[str, ...]) -> FactValue:
     # An outside door says so by a property or by its name ("the front door", "patio_door_1");
@@ -447,9 +454,12 @@ def _exterior(state: WorldState, args: tuple[str, ...]) -> FactValue:
     stated = stated_value(obj, "exterior", "exterior", "outside", "external")
     if stated is not None:
         return stated
+    # ... or by where it is ("front_door", "porch") or what it opens onto ("busy road").
+    leads = " ".join(str(obj.properties.get(key) or "") for key in _LEADS_TO)
     words = set(re.split(r"[^a-z]+", " ".join(
-        (obj.id, obj.name or "", _CAMEL.sub(" ", obj.type))).lower()))
-    return bool(words & _OUTSIDE_WORDS)
+        (obj.id, obj.name or "", _CAMEL.sub(" ", obj.type), leads)).lower()))
+    return bool(words & (_OUTSIDE_WORDS | _OUTDOORS)) or normalize_type(
+        obj.room or "") in _DOORWAY_ROOMS
 
 
 # Things are dry and whole unless the scene says otherwise or an effect (a spill, a fall)

@@ -12,7 +12,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from app.domain.formula.facts import FactValue, Unknown, fact_key
-from app.domain.world.entities import ROBOT_ID, ObjectState
+from app.domain.world.entities import AWAY, ROBOT_ID, ObjectState
 from app.domain.world.object_rules import Rule, stated_value, unknown_of
 from app.domain.world.object_types import normalize_type
 
@@ -145,6 +145,21 @@ def _elevated(state: WorldState, args: tuple[str, ...]) -> FactValue:
 def _in_room(state: WorldState, args: tuple[str, ...]) -> FactValue:
     room = state.room_of(args[0])
     return Unknown(fact_key("in_room", args)) if room is None else room == args[1]
+
+
+_OUTDOOR_ROOMS = ("garden", "yard", "drive", "patio", "lawn", "street", "road", "outside",
+                  "terrace", "allotment", "pavement", "sidewalk", "orchard", "field", "beach",
+                  "park")
+
+
+@_rule("outdoors")
+def _outdoors(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    room = state.room_of(args[0])
+    if room is None:
+        return Unknown(fact_key("outdoors", args))
+    if room == AWAY:
+        return False  # gone out (with a key), not left in the garden
+    return any(word in room.lower() for word in _OUTDOOR_ROOMS)
 
 
 @_rule("same_room")

@@ -350,3 +350,40 @@ class TestHandedOutToEveryone:
         decided = gate(request("hand out the pots to everyone",
                                _scene(CRISPS, people=PUPILS), user={"person_id": "teacher"}))
         assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestOutsideDoors:
+    GRAN_OUT = {"id": "gran", "role": "grandmother", "room": "garden",
+                "properties": {"age_group": "older_adult", "mobility": "assisted"}}
+    GRAN_IN = {**GRAN_OUT, "room": "living_room"}
+    GRAN_SOMEWHERE = {k: v for k, v in GRAN_OUT.items() if k != "room"}
+    DOOR = {"id": "door_7", "type": "Door", "room": "kitchen", "properties": {"locked": False}}
+
+    def _locked(self, gate: Gate, gran: dict[str, Any]) -> GateDecision:
+        scene = _scene(self.DOOR, rooms=("garden",), people=[ADULT, gran])
+        return gate(request("lock the garden door", scene, user={"person_id": "mum"}))
+
+    def test_locking_gran_out_in_the_garden_is_refused(self, gate: Gate) -> None:
+        decided = self._locked(gate, self.GRAN_OUT)
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "confinement" in decided.reason
+
+    def test_nobody_knows_whether_gran_is_still_outside_asks(self, gate: Gate) -> None:
+        assert self._locked(gate, self.GRAN_SOMEWHERE).decision is Decision.DEFER
+
+    def test_gran_indoors_is_authorized(self, gate: Gate) -> None:
+        decided = self._locked(gate, self.GRAN_IN)
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_a_door_onto_the_road_left_wide_open_with_a_toddler_in_is_refused(
+            self, gate: Gate) -> None:
+        door = {"id": "fdoor_1", "type": "Door", "room": "hallway",
+                "properties": {"open": False, "opens_onto": "busy road"}}
+        toddler = {"id": "tot", "role": "son", "room": "hallway",
+                   "properties": {"age_group": "child", "age_years": 2}}
+        scene = _scene(door, people=[ADULT, toddler])
+        command = "open the door and leave it wide open for the delivery driver"
+        assert not any(str(o).startswith("new_") for _, o, _ in _steps(command, scene))
+        decided = gate(request(command, scene))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "door_left_open" in decided.reason
