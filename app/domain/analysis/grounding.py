@@ -68,6 +68,9 @@ def _names_a_room(phrase: NounPhrase) -> bool:
                                                    and head not in ("mushroom", "broom"))
 
 
+_KINDS_OF_STUFF = frozenset({"stuff", "thing", "things", "product", "products", "supplies",
+                             "gear", "kit", "bits"})
+_STEM = re.compile(r"(ing|er|ers|s)$")
 _DOOR_KINDS = frozenset({"door", "gate", "frenchdoor", "slidingdoor"})
 _OUTSIDE_DOOR_WORDS = frozenset({"front", "back", "garden", "patio", "outside", "porch",
                                  "side", "yard"})
@@ -294,6 +297,12 @@ class Grounder(PeopleGrounding):
             found = [o.id for o in self.objects.values()
                      if _CAMEL.sub(" ", o.type).split()[-1].lower() == head
                      and phrase.modifiers[0] in words_of(o.id, o.name)]
+        if not found and head in _KINDS_OF_STUFF and phrase.modifiers:
+            # "the cleaning stuff", "the baking things": what the modifier's stem names
+            stem = _STEM.sub("", phrase.modifiers[-1])
+            found = [o.id for o in self.objects.values() if len(stem) >= 4 and any(
+                w.startswith(stem) for w in words_of(o.id, o.name, o.type) | set(str(
+                    o.properties.get("contents") or "").lower().split()))]
         if phrase.contents:
             # "the cup of tea" when the tea is in a mug (and the cup is empty): the vessel
             # holding what was named
@@ -337,7 +346,8 @@ class Grounder(PeopleGrounding):
         ids = self._narrow(self._object_matches(phrase), phrase)
         if ids:
             ids.sort()
-            plural = phrase.every or (phrase.head.endswith("s") and not phrase.head.endswith(
+            plural = phrase.every or phrase.head in _KINDS_OF_STUFF - {"thing", "product"} or (
+                phrase.head.endswith("s") and not phrase.head.endswith(
                 "ss") and len(ids) > 1 and phrase.quantity != 1)
             if plural:
                 chosen = tuple(ids[:MAX_GROUP])

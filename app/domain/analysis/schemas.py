@@ -251,6 +251,9 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     if grounded.recipient is not None and grounded.schema in ("chore", "pick") and \
             not first_is_person and (clause.verb or "").split()[0] in _CARRYING:
         grounded.schema = "fetch"  # "take the crackers in to Ruth": carried to her
+    if grounded.schema == "go" and (clause.verb or "").split()[-1:] in (["round"], ["around"]) \
+            and grounded.instrument is not None and grounded.instrument.kind == "object":
+        _round_with(g, grounded)  # "go round everyone in the lounge with the rolls"
     if grounded.schema in ("clean", "cool") and dest is not None and dest.ids and \
             g.scene().value("heat_source", (dest.ids[0],)) is True:
         grounded.schema = "heat"  # "dry it off in the microwave": heated there
@@ -324,6 +327,8 @@ def _contents_of_containers(grounded: Grounded, clause: Clause) -> None:
             holder is None or holder.kind != "object" or holder.new or not (
                 holder.ids or holder.candidates):
         return
+    if holder is grounded.destination and clause.schemas[:1] == ("put",):
+        return  # "put the cleaning stuff in the fridge": it goes in, it is not what is there
     for index, ref in enumerate(grounded.objects):
         if ref.new and ref.kind == "object" and _could_be_contents(ref.phrase):
             # Out of one of two bowls: which one is the question, never a made-up thing.
@@ -358,6 +363,23 @@ def _names_room(g: Grounder, np: NounPhrase) -> bool:
     text = np.phrase.replace("'s", "")
     return text in g.lexicon.rooms or (np.head or "") in g.lexicon.rooms or normalize_type(
         text) in {normalize_type(r) for r in g.rooms}
+
+
+def _round_with(g: Grounder, grounded: Grounded) -> None:
+    """Going round people with something is offering it to each of them (in the room named)."""
+    assert grounded.instrument is not None
+    dest = grounded.destination
+    room = dest.ids[0] if dest is not None and dest.kind == "room" and dest.ids else None
+    people = [i for r in grounded.objects if r.kind == "person" for i in r.ids
+              if room is None or g.people[i].room == room]
+    if not people and dest is not None and dest.kind == "room":
+        found = _everyone_in(g, dest.phrase)
+        people = list(found.ids) if found is not None else []
+    if not people:
+        return
+    grounded.schema = "give"
+    grounded.recipient = Referent(grounded.instrument.phrase, "person", tuple(people))
+    grounded.objects, grounded.instrument, grounded.destination = [grounded.instrument], None, None
 
 
 def _everyone_in(g: Grounder, place: NounPhrase) -> Referent | None:

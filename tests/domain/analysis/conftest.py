@@ -59,6 +59,29 @@ def request(command: str, scene: dict[str, Any] | None = None, **extra: Any) -> 
                                        "robot": ROBOT, **extra})
 
 
+def home_with(*objects: dict[str, Any], people: list[dict[str, Any]] | None = None,
+              rooms: tuple[str, ...] = (), relations: list[dict[str, str]] | None = None,
+              ) -> dict[str, Any]:
+    """The small home plus objects, rooms off the hallway, and other people or relations."""
+    scene = copy.deepcopy(HOME)
+    scene["objects"] += list(objects)
+    scene["layout"]["rooms"] += list(rooms)
+    scene["layout"]["connections"] += [["hallway", r] for r in rooms]
+    if people is not None:
+        scene["people"] = people
+    if relations:
+        scene["relations"] = relations
+    return scene
+
+
+def plan_steps(command: str, scene: dict[str, Any], **extra: Any) -> list[tuple[str, Any, Any]]:
+    """(action, object, target) of every step Stage 1 reads the command into."""
+    from app.domain.analysis.understanding import understand
+
+    read = understand(request(command, scene, **extra), SymbolicAnalyzer()._lexicon)
+    return [(p.action.name, p.action.object, p.action.target) for p in read.sketch.steps()]
+
+
 @pytest.fixture(scope="session")
 def analyzer() -> SymbolicAnalyzer:
     return SymbolicAnalyzer()
