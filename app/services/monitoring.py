@@ -176,6 +176,10 @@ class MonitorService:
             NotFound: no such session.
         """
         live = self._live.get(session_id)
+        if live is not None and not live.broken and not live.driven:
+            # A runtime that just disconnected may still have refusals being written: what
+            # this process answered is in the database before the summary is read from it.
+            await self._commits.durable(live)
         if live is None or live.broken or not live.driven:
             live = await anyio.to_thread.run_sync(self._loader.restore, session_id)
         return live.contract_id, live.monitor.summary()
