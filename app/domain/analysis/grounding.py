@@ -71,6 +71,7 @@ def _names_a_room(phrase: NounPhrase) -> bool:
 _KINDS_OF_STUFF = frozenset({"stuff", "thing", "things", "product", "products", "supplies",
                              "gear", "kit", "bits"})
 _STEM = re.compile(r"(ing|er|ers|s)$")
+_OPENED_BY = frozenset({"door", "lid", "flap", "hatch"})
 _DOOR_KINDS = frozenset({"door", "gate", "frenchdoor", "slidingdoor"})
 _OUTSIDE_DOOR_WORDS = frozenset({"front", "back", "garden", "patio", "outside", "porch",
                                  "side", "yard"})
@@ -364,7 +365,8 @@ class Grounder(PeopleGrounding):
             concept_of(head) is None
         # "Ivy's high chair tray" (a place), "the drain unblocker" (a word no table knows):
         # the one scene object the other words name
-        part_of = self._part_of(phrase) if place or unknown_head else None
+        # ... and "the fridge door", "the freezer lid": the appliance, opened or shut by it
+        part_of = self._part_of(phrase) if place or unknown_head or head in _OPENED_BY else None
         if part_of is not None:
             return part_of
         return self._new_object(phrase, place=place)

@@ -9,8 +9,24 @@ in `recipes.py`. Fails: never; a handler whose arguments do not fit adds no step
 
 from __future__ import annotations
 
+import re
+
+from app.domain.analysis.carrying import (
+    BINS,
+    break_open,
+    destination_id,
+    discard,
+    drop,
+    fetch,
+    give,
+    object_ids,
+    put,
+    remove,
+    throw,
+)
+from app.domain.analysis.phrases import TIME_UNITS
 from app.domain.analysis.recipes import RECIPES, empty_container
-from app.domain.analysis.schemas import DECLARED_SCHEMAS, NEXT_TO, Grounded
+from app.domain.analysis.schemas import DECLARED_SCHEMAS, Grounded
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
 
@@ -27,11 +43,11 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
         return
     handler = _HANDLERS.get(schema) or RECIPES.get(schema)
     if grounded.into_hands and schema in ("put", "fetch", "give", "pick"):
-        handler = _give  # "straight into his hands": handed over, not set down beside him
+        handler = give  # "straight into his hands": handed over, not set down beside him
     along = grounded.instrument
-    if along is not None and normalize_type(along.phrase.head or "") in _BINS | {"bins"} and \
+    if along is not None and normalize_type(along.phrase.head or "") in BINS | {"bins"} and \
             (grounded.clause.verb or "").split()[0] in ("put", "take", "leave", "stick"):
-        handler = _discard  # "put the wallet out with the recycling": thrown out
+        handler = discard  # "put the wallet out with the recycling": thrown out
     if schema == "put" and _timed_in_a_cooker(builder, grounded):
         handler = RECIPES["heat"]  # "stick the curry in the microwave for two minutes"
     before = len(builder.sketch.literal)
@@ -45,8 +61,8 @@ def apply_clause(builder: PlanBuilder, grounded: Grounded) -> None:
         builder.go_to(dest.ids[0], kind="literal")  # "run out to the garage": go there
 
 
-_TIME_UNITS = frozenset({"second", "seconds", "sec", "secs", "minute", "minutes", "min", "mins",
-                         "hour", "hours", "hr", "hrs"})
+_A_WHILE = re.compile(r"\b(?:\d+|a|one|two|three|four|five|six|ten|a couple of|a few)\s*"
+                      r"(?:mins?|minutes?|secs?|seconds?)\b")
 _COOKERS = frozenset({"microwave", "oven", "toaster", "toasteroven", "airfryer", "grill",
                       "stoveburner", "stove", "hob", "slowcooker", "ricecooker"})
 
@@ -55,7 +71,9 @@ def _timed_in_a_cooker(builder: PlanBuilder, grounded: Grounded) -> bool:
     """Put in a cooking appliance for a length of time: the appliance is run for it."""
     spell = grounded.clause.role("for")
     dest = grounded.destination
-    if spell is None or (spell.head or "") not in _TIME_UNITS or dest is None or not dest.ids:
+    timed = (spell is not None and (spell.head or "") in TIME_UNITS) or bool(
+        _A_WHILE.search(grounded.clause.text))
+    if not timed or dest is None or not dest.ids:
         return False
     appliance = builder.state.objects.get(dest.ids[0])
     return appliance is not None and normalize_type(appliance.kind.name) in _COOKERS
@@ -73,7 +91,7 @@ def _container_task(builder: PlanBuilder, grounded: Grounded) -> bool:
     receptacle (a dishwasher, a table) is never lifted; a portable one is emptied only by a verb
     that says so ("unpack the bag"), since "clear the plates" moves the plates."""
     verb = grounded.clause.verb
-    ids = _ids(grounded)
+    ids = object_ids(grounded)
     if grounded.destination is not None or not ids or verb not in _FILLING | _EMPTYING:
         return False
     state = builder.state
@@ -94,164 +112,9 @@ def _container_task(builder: PlanBuilder, grounded: Grounded) -> bool:
     return True
 
 
-def _ids(grounded: Grounded, kind: str = "object") -> list[str]:
-    return [i for r in grounded.objects if r.kind == kind for i in r.ids]
-
-
-def _destination_id(builder: PlanBuilder, grounded: Grounded) -> str | None:
-    """The receptacle a destination names (a room's surface for a room)."""
-    dest = grounded.destination
-    if dest is None or not dest.ids:
-        return None
-    if dest.kind == "room":
-        return builder.surface(dest.ids[0])
-    return dest.ids[0] if dest.kind == "object" else None
-
-
-def _recipients(grounded: Grounded) -> tuple[str, ...]:
-    """Everyone the thing goes to: one person, or each in turn ("hand them out to everyone")."""
-    return grounded.recipient.ids if grounded.recipient is not None else ()
-
-
-def _fetch(builder: PlanBuilder, grounded: Grounded) -> None:
-    target = _destination_id(builder, grounded)
-    people = _recipients(grounded)
-    for obj in _ids(grounded):
-        if grounded.carried_on and not people and target is None:
-            builder.acquire(obj)
-        elif people:
-            for person in people:
-                builder.deliver(obj, person)
-        elif target is not None:
-            builder.place(obj, target)
-        else:
-            builder.deliver(obj, builder.user())
-
-
-def _give(builder: PlanBuilder, grounded: Grounded) -> None:
-    people = _recipients(grounded) or (builder.user(),)
-    for obj in _ids(grounded):
-        for person in people:
-            if builder.acquire(obj):
-                builder.go_to(person)
-                builder.hand_to(obj, person)
-
-
-_BASINS = frozenset({"toilet", "sink", "sinkbasin", "bathtub", "bathtubbasin", "bucket",
-                     "drain", "basin"})
-
-
-def _poured_in(builder: PlanBuilder, obj: str, target: str) -> bool:
-    """ "Put some milk in the coffee", "bleach in the toilet": a liquid goes into a vessel or a
-    basin by pouring it, not by standing its bottle there."""
-    state = builder.state
-    receptacle = state.objects.get(target)
-    if receptacle is None or state.value("filled", (obj,)) is not True:
-        return False
-    kind = normalize_type(receptacle.kind.name)
-    return kind in _BASINS or (receptacle.kind.flag("can_fill") is True
-                               and state.objects[obj].kind.flag("receptacle") is not False
-                               and kind not in ("fridge", "cabinet", "drawer", "shelf"))
-
-
-def _put(builder: PlanBuilder, grounded: Grounded) -> None:
-    target = _destination_id(builder, grounded)
-    if target is None and grounded.recipient is not None and grounded.recipient.id:
-        _fetch(builder, grounded)
-        return
-    for obj in _ids(grounded):
-        if target is not None and _poured_in(builder, obj, target) and builder.acquire(obj):
-            builder.go_to(target)
-            builder.act("Pour", obj, target)
-            continue
-        here = target
-        if here is None:
-            start = builder.grounder.objects.get(obj)
-            here = builder.find_type("Drawer", "Cabinet", "Shelf", room=builder.state.room_of(
-                obj)) if start is None or start.parent is None else start.parent
-            here = here or builder.surface(builder.state.room_of(obj), avoid=obj)
-        beside = grounded.beside.id if grounded.beside is not None and \
-            grounded.beside.kind == "object" else None
-        if grounded.destination_word in NEXT_TO and here == target and \
-                builder.state.entity_type(here) == "object":
-            # "by the door", "beside the heater": on the floor or a surface of its room, beside
-            # it, not on or against it
-            here, beside = builder.surface(builder.state.room_of(here), avoid=obj), here
-        builder.place(obj, here, relation=builder.relation_for(here), beside=beside)
-
-
-def _discard(builder: PlanBuilder, grounded: Grounded) -> None:
-    can = _destination_id(builder, grounded) or builder.ensure("GarbageCan")
-    for obj in _ids(grounded):
-        builder.place(obj, can, relation="in")
-
-
-def _remove(builder: PlanBuilder, grounded: Grounded) -> None:
-    target = _destination_id(builder, grounded)
-    for obj in _ids(grounded):
-        if builder.acquire(obj, kind="literal"):
-            room = builder.state.robot.room
-            builder.place(obj, target or builder.surface(room, avoid=obj), kind="enabling")
-
-
-_BINS = frozenset({"garbagecan", "garbagebag", "trash", "bin", "rubbish", "garbage",
-                   "wastebasket", "dustbin", "recycling"})
-
-
-_DRAPED_ON = frozenset({"over", "on", "onto", "on top of"})
-
-
-def _throw(builder: PlanBuilder, grounded: Grounded) -> None:
-    dest = grounded.destination
-    if dest is not None and dest.id and (normalize_type(dest.phrase.head) in _BINS or (
-            dest.kind == "object" and normalize_type(
-                builder.state.objects[dest.id].kind.name) in _BINS)):
-        _discard(builder, grounded)  # "throw it in the bin" puts it in the bin
-        return
-    if dest is not None and dest.kind == "object" and dest.id and grounded.recipient is None \
-            and grounded.destination_word in _DRAPED_ON and \
-            builder.state.value("animal", (dest.id,)) is not True and \
-            normalize_type(builder.state.objects[dest.id].kind.name) != "floor" and not any(
-                builder.state.value("filled", (obj,)) is True for obj in _ids(grounded)) and \
-            grounded.objects and not any(r.new for r in grounded.objects):
-        # "chuck the towels over the heater": laid there, not aimed (but a jug of water thrown
-        # is its water thrown, and "lob it over to me" is aimed at the person)
-        _put(builder, grounded)
-        return
-    target = grounded.destination or grounded.recipient
-    aim = target.id if target is not None and target.kind in ("person", "object", "room") \
-        else None
-    for obj in _ids(grounded):
-        if builder.acquire(obj):
-            builder.act("ThrowObject", obj, aim)
-
-
-def _drop(builder: PlanBuilder, grounded: Grounded) -> None:
-    dest = grounded.destination
-    for obj in _ids(grounded):
-        if builder.acquire(obj):
-            if dest is not None and dest.id and dest.kind in ("room", "object", "person"):
-                builder.go_to(dest.id)
-            builder.act("DropHandObject", obj)
-
-
-def _break(builder: PlanBuilder, grounded: Grounded) -> None:
-    dest = grounded.destination
-    for obj in _ids(grounded):
-        if dest is not None and dest.id and normalize_type(dest.phrase.head) == "floor" and \
-                builder.acquire(obj):
-            builder.act("DropHandObject", obj)
-        builder.go_to(obj)
-        builder.act("BreakObject", obj)
-        if builder.state.value("food", (obj,)) is not True or builder.state.value(
-                "on_floor", (obj,)) is True:
-            builder.cleanup("PickupObject", obj)
-            builder.cleanup("PutObject", obj, builder.ensure("GarbageCan"), relation="in")
-
-
 def _simple(action: str, cleanup: str | None = None):  # type: ignore[no-untyped-def]
     def handler(builder: PlanBuilder, grounded: Grounded) -> None:
-        for obj in _ids(grounded):
+        for obj in object_ids(grounded):
             builder.go_to(obj)
             if builder.act(action, obj) and cleanup:
                 builder.cleanup(cleanup, obj)
@@ -272,8 +135,8 @@ def _slice(builder: PlanBuilder, grounded: Grounded) -> None:
     tool = grounded.instrument.id if grounded.instrument is not None and \
         grounded.instrument.kind == "object" else None
     knife = tool or builder.ensure("Knife", room=builder.state.room_of(
-        (_ids(grounded) or [""])[0]))
-    for obj in _ids(grounded):
+        (object_ids(grounded) or [""])[0]))
+    for obj in object_ids(grounded):
         if builder.acquire(knife):
             builder.go_to(obj)
             builder.act("SliceObject", obj)
@@ -288,10 +151,10 @@ def _clean(builder: PlanBuilder, grounded: Grounded) -> None:
     tool = grounded.instrument
     if tool is not None and tool.kind == "object" and tool.id and builder.state.value(
             "filled", (tool.id,)) is not False and builder.acquire(tool.id):
-        for obj in _ids(grounded):
+        for obj in object_ids(grounded):
             builder.go_to(obj)
             builder.act("SprayObject", tool.id, obj)
-    targets = _ids(grounded) or ([grounded.destination.id] if grounded.destination
+    targets = object_ids(grounded) or ([grounded.destination.id] if grounded.destination
                                  and grounded.destination.id else [])
     for obj in targets:
         if builder.state.entity_type(obj) == "room":
@@ -302,7 +165,7 @@ def _clean(builder: PlanBuilder, grounded: Grounded) -> None:
 
 
 def _spray(builder: PlanBuilder, grounded: Grounded) -> None:
-    objects = _ids(grounded)
+    objects = object_ids(grounded)
     tool = grounded.instrument
     sprayer = tool.id if tool is not None and tool.kind == "object" and tool.id else None
     targets = objects
@@ -337,7 +200,7 @@ def _find(builder: PlanBuilder, grounded: Grounded) -> None:
 
 def _person_act(action: str):  # type: ignore[no-untyped-def]
     def handler(builder: PlanBuilder, grounded: Grounded) -> None:
-        for person in _ids(grounded, "person"):
+        for person in object_ids(grounded, "person"):
             builder.go_to(person)
             if action == "Escort":
                 dest = grounded.destination
@@ -354,9 +217,9 @@ _PET_BOWLS = ("PetBowl", "DogBowl", "CatBowl", "PetFoodBowl")
 
 
 def _feed(builder: PlanBuilder, grounded: Grounded) -> None:
-    people = _ids(grounded, "person") or (
+    people = object_ids(grounded, "person") or (
         [grounded.recipient.id] if grounded.recipient and grounded.recipient.id else [])
-    foods = _ids(grounded) or ([grounded.instrument.id] if grounded.instrument is not None
+    foods = object_ids(grounded) or ([grounded.instrument.id] if grounded.instrument is not None
                                and grounded.instrument.kind == "object"
                                and grounded.instrument.id else [])
     for person in people:
@@ -392,23 +255,23 @@ def _floor_chore(action: str):  # type: ignore[no-untyped-def]
 
 def _push(builder: PlanBuilder, grounded: Grounded) -> None:
     dest = grounded.destination
-    for obj in _ids(grounded):
+    for obj in object_ids(grounded):
         builder.go_to(obj)
         builder.act("PushObject", obj, dest.id if dest is not None and dest.id else None)
 
 
 def _pick(builder: PlanBuilder, grounded: Grounded) -> None:
     if grounded.destination is not None or grounded.recipient is not None:
-        _fetch(builder, grounded)
+        fetch(builder, grounded)
         return
-    for obj in _ids(grounded):
+    for obj in object_ids(grounded):
         builder.acquire(obj, kind="literal")
 
 
 def _plug(on: bool):  # type: ignore[no-untyped-def]
     def handler(builder: PlanBuilder, grounded: Grounded) -> None:
-        target = _destination_id(builder, grounded)
-        for obj in _ids(grounded):
+        target = destination_id(builder, grounded)
+        for obj in object_ids(grounded):
             if on and target is not None and builder.state.holder_of(obj) is None:
                 builder.place(obj, target, kind="enabling")
             builder.go_to(obj)
@@ -422,11 +285,11 @@ def _lock(locked: bool):  # type: ignore[no-untyped-def]
 
     def handler(builder: PlanBuilder, grounded: Grounded) -> None:
         # "lock the scissors in the staff cupboard": put them there, then lock the cupboard
-        place = _destination_id(builder, grounded) if locked else None
+        place = destination_id(builder, grounded) if locked else None
         if place is None:
             simple(builder, grounded)
             return
-        _put(builder, grounded)
+        put(builder, grounded)
         builder.go_to(place)
         builder.act(action, place)
     return handler
@@ -437,13 +300,13 @@ def _wait(builder: PlanBuilder, grounded: Grounded) -> None:
 
 
 def _visit_people(builder: PlanBuilder, grounded: Grounded) -> None:
-    for person in [*_ids(grounded, "person"), *grounded.persons()]:
+    for person in [*object_ids(grounded, "person"), *grounded.persons()]:
         builder.go_to(person, kind="literal")
 
 
 _HANDLERS = {
-    "fetch": _fetch, "give": _give, "put": _put, "discard": _discard, "remove": _remove,
-    "throw": _throw, "drop": _drop, "break": _break, "crack": _break,
+    "fetch": fetch, "give": give, "put": put, "discard": discard, "remove": remove,
+    "throw": throw, "drop": drop, "break": break_open, "crack": break_open,
     "open": _simple("OpenObject"), "close": _simple("CloseObject"),
     "lock": _lock(True), "unlock": _lock(False),
     "switch_on": _switch(True), "switch_off": _switch(False), "slice": _slice,

@@ -203,6 +203,9 @@ def split_conjoined(words: list[str]) -> list[list[str]]:
 
 
 # "a 40 degree cycle", "the eco programme": a run of a washing machine or dishwasher.
+TIME_UNITS = frozenset({"second", "seconds", "sec", "secs", "minute", "minutes", "min", "mins",
+                        "hour", "hours", "hr", "hrs"})
+"""Words for a length of time ("for two minutes", ", 3 mins"): how long, never a place."""
 PROGRAM_NOUNS = frozenset({"cycle", "programme", "program", "wash", "setting", "mode"})
 
 BODY_PARTS = frozenset({

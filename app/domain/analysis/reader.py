@@ -122,7 +122,13 @@ def _unabbreviated(text: str) -> str:
     sentence."""
     text = _TIME_OF_DAY.sub(r"\1m", text)
     text = _DECIMAL.sub("_", text)
+    text = _PLUG_PULLED.sub("unplug ", text)
     return _ABBREVIATION.sub(r"\1", text)
+
+
+# "Pull the plug on the fridge", "take the plug out of the telly": unplug it.
+_PLUG_PULLED = re.compile(
+    r"\b(?:pull|take|yank|whip)(?: out)? the plug (?:on|of|out of|from|out from) ")
 
 
 _ASSURE = (("make", "sure"), ("ensure",), ("see", "that"), ("check", "that"))
@@ -668,6 +674,9 @@ class Reader:
             # "grandma the cup"; "Mr Grey his fags and lighter": the person, then every thing
             # (but "make us a tea, milk and two sugars" lists what goes in the tea)
             first, rest = self._recipient_split(objects_words[0])
+            if first == ["her"] and any(prep in ("to", "into", "back to") and chunk
+                                        for prep, chunk in chunks[1:]):
+                first = None  # "take her frame to the office": her frame, taken there
             if first is not None and rest:
                 second, objects_words = parse_phrase(first, lexicon), [rest, *objects_words[1:]]
         objects = tuple(p for w in objects_words if (p := parse_phrase(w, lexicon)) is not None)

@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from app.domain.analysis.grounding import Grounder
-from app.domain.analysis.phrases import BODY_PARTS, NounPhrase
+from app.domain.analysis.phrases import BODY_PARTS, TIME_UNITS, NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.referents import Referent
 from app.domain.analysis.steps import PlanBuilder
@@ -170,7 +170,10 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             ("from" if prep in _LOCATIVE else prep, np) for prep, np in clause.roles))
         grounded.clause = clause
     places = [i for i, (prep, np) in enumerate(clause.roles)
-              if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)]
+              if prep in _DESTINATION and not _setting(np) and not to_person(prep, np)
+              and (np.head or "") not in TIME_UNITS]
+    if len(places) > 1 and clause.roles[places[-1]][1].text.split()[:1] in (["its"], ["their"]):
+        places.pop()  # "the curry in the microwave in its foil tray": what it is in already
     if len(places) > 1 and clause.roles[places[-1]][0] in ("in", "inside", "at") and \
             _names_room(g, clause.roles[places[-1]][1]) and \
             not _names_room(g, clause.roles[places[-2]][1]):

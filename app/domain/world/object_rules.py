@@ -250,6 +250,9 @@ def _plausible_content_rule(symbol: str) -> None:
         if stated is not None:
             return stated
         by_type, by_contents = obj.kind.trait(symbol), _by_contents(obj, symbol)
+        if by_type is not True and normalize_type(obj.type) != normalize_type(obj.kind.name) \
+                and substance_trait(_CAMEL.sub(" ", obj.type).lower(), symbol):
+            by_type = True  # a type named for what it holds ("InsulinPens" are not just pens)
         if by_type is None and by_contents is not None:
             by_type = False
         decided = _decide(symbol, obj, by_type, by_contents)
@@ -501,6 +504,9 @@ def _metal(state: WorldState, args: tuple[str, ...]) -> FactValue:
     stated = stated_value(obj, "metal")
     if stated is not None:
         return stated
+    wrapping = obj.properties.get("wrapped_in") or obj.properties.get("wrapped")
+    if isinstance(wrapping, str) and any(m in wrapping.lower() for m in _METALS):
+        return True  # a potato in foil takes its foil wherever it goes
     material = obj.properties.get("material")
     if isinstance(material, str):
         return any(m in material.lower() for m in _METALS)

@@ -431,3 +431,93 @@ class TestGoingRoundWithSomething:
                                home_with(self.ROLLS, people=self._residents("regular")),
                                user={"person_id": "carer"}))
         assert decided.decision is not Decision.REJECT, decided.reason
+
+
+class TestWhatThingsAreCalled:
+    def test_pulling_the_plug_on_the_fridge_unplugs_it(self) -> None:
+        fridge = {"id": "fridge_9", "type": "Fridge", "room": "kitchen",
+                  "properties": {"on": True}}
+        steps = plan_steps("pull the plug on the fridge", home_with(fridge))
+        assert ("Unplug", "fridge_9", None) in steps
+
+    def test_a_type_named_for_a_medicine_is_medicine(self, gate: Gate) -> None:
+        fridge = {"id": "fridge_9", "type": "Fridge", "room": "kitchen",
+                  "properties": {"on": True}}
+        pens = {"id": "pens_1", "type": "InsulinPens", "room": "kitchen", "in": "fridge_9"}
+        decided = gate(request("pull the plug on the fridge", home_with(fridge, pens)))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_the_fridge_door_is_the_fridge(self) -> None:
+        fridge = {"id": "fridge_9", "type": "Fridge", "room": "kitchen",
+                  "properties": {"open": False}}
+        assert ("OpenObject", "fridge_9", None) in plan_steps("open the fridge door",
+                                                               home_with(fridge))
+
+    @staticmethod
+    def _potato(**properties: Any) -> dict[str, Any]:
+        scene = home_with()
+        potato = next(o for o in scene["objects"] if o["id"] == "potato_1")
+        potato["properties"] = properties
+        return scene
+
+    def test_a_potato_wrapped_in_foil_is_not_microwaved(self, gate: Gate) -> None:
+        decided = gate(request("microwave the potato for six minutes",
+                               self._potato(wrapped_in="aluminium foil")))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "microwave_metal" in decided.reason
+
+    def test_a_bare_potato_is_microwaved(self, gate: Gate) -> None:
+        decided = gate(request("microwave the potato for six minutes", self._potato()))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_a_time_after_a_comma_runs_the_cooker_and_its_own_tray_is_no_destination(
+            self) -> None:
+        tray = {"id": "tray_1", "type": "FoilTray", "room": "kitchen", "on": "counter_1",
+                "properties": {"contents": "curry"}}
+        steps = plan_steps("bung the curry in the microwave in its foil tray, 3 mins",
+                           home_with(tray))
+        assert ("PutObject", "tray_1", "microwave_1") in steps
+        assert ("ToggleObjectOn", "microwave_1", None) in steps
+
+
+class TestAPetByAnOpenGate:
+    GATE = {"id": "gate_1", "type": "Gate", "room": "front_garden", "properties": {"open": False}}
+
+    def _propped(self, gate: Gate, dog_room: str) -> GateDecision:
+        dog = {"id": "rex", "type": "Dog", "room": dog_room}
+        scene = home_with(self.GATE, dog, rooms=("front_garden",))
+        return gate(request("prop the front gate open, the van's coming", scene))
+
+    def test_propped_open_with_the_dog_loose_in_the_garden_is_refused(self, gate: Gate) -> None:
+        decided = self._propped(gate, "front_garden")
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "door_left_open" in decided.reason
+
+    def test_propped_open_with_the_dog_indoors_is_authorized(self, gate: Gate) -> None:
+        decided = self._propped(gate, "living_room")
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestHerThingTakenSomewhere:
+    NAN = {"id": "nan", "role": "grandmother", "room": "kitchen",
+           "properties": {"age_group": "older_adult", "mobility": "assisted",
+                          "walking_aid": "walking frame"}}
+    FRAME = {"id": "frame_1", "type": "Walker", "room": "kitchen",
+             "properties": {"owner": "nan"}}
+
+    def test_her_frame_to_the_office_is_her_frame_taken_away(self, gate: Gate) -> None:
+        scene = home_with(self.FRAME, people=[self.NAN], rooms=("office",))
+        steps = plan_steps("take her frame to the office", scene)
+        assert not any(name == "HandOver" for name, _, _ in steps)
+        decided = gate(request("take her frame to the office", scene))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_take_her_the_frame_still_hands_it_to_her(self) -> None:
+        scene = home_with(self.FRAME, people=[self.NAN], rooms=("office",))
+        assert ("HandOver", "frame_1", "nan") in plan_steps("take her the frame", scene)
+
+
+def test_a_place_word_with_nothing_after_it_beside_another_place_is_read() -> None:
+    # "with the lid on": a preposition whose noun is left out, after another place
+    steps = plan_steps("put the cup on the counter with the lid on", home_with())
+    assert steps
