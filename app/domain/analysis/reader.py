@@ -648,7 +648,7 @@ class Reader:
             object_words, complement = _kept_state(object_words)
         if complement is None and object_words and len(object_words) > 1 and (
                 object_words[-1] in _COMPLEMENTS or (
-                    verb in _STARTING_VERBS and object_words[-1] in _PROCESSES
+                    verb in STARTING_VERBS and object_words[-1] in _PROCESSES
                     and object_words[-2] not in _DETERMINERS)):
             complement = object_words.pop()
             if len(object_words) > 1 and object_words[-1] in _STATE_PARTICIPLES:
@@ -692,11 +692,11 @@ class Reader:
                        if not chunk and prep in _PLACING)
         schemas = lexicon.schemas_of(verb)
         if (setting is not None or complement in _PROCESSES) and \
-                verb in _SETTING_VERBS | _STARTING_VERBS and objects and not any(
+                verb in _SETTING_VERBS | STARTING_VERBS and objects and not any(
                     prep in _PLACING and chunk for prep, chunk in chunks[1:]):
             # "set the dryer going", "put the heater on full": switched on
             schemas = lexicon.schemas_of("turn on") or schemas
-        elif complement in _HEATING and verb in _SETTING_VERBS | _STARTING_VERBS and objects:
+        elif complement in _HEATING and verb in _SETTING_VERBS | STARTING_VERBS and objects:
             # "get the chip pan heating on the big ring": put there and the ring switched on
             schemas = lexicon.schemas_of("heat") or schemas
         if verb in ("keep", "leave") and complement in _DIRECTIVE_STATES and objects:
@@ -764,7 +764,7 @@ _PROGRAMME_NAMES = frozenset({"eco", "economy", "quick", "intensive", "delicate"
                               "rinse", "spin"})
 _SETTING_VERBS = frozenset({"put", "set", "pop", "stick", "have", "get"})
 # "start the sink filling", "get the bath running": what a started thing goes on doing.
-_STARTING_VERBS = frozenset({"start", "set", "get"})
+STARTING_VERBS = frozenset({"start", "set", "get"})
 _HEATING = frozenset({"heating", "boiling", "warming", "cooking", "frying", "simmering"})
 _PROCESSES = _HEATING | frozenset({"going", "running", "filling", "preheating", "draining",
                                    "spinning"})

@@ -21,7 +21,7 @@ from app.domain.analysis.handlers import apply_clause
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.names import scene_names
 from app.domain.analysis.questions import not_understood, which_one
-from app.domain.analysis.reader import Clause, Reader, sounds_like_statement
+from app.domain.analysis.reader import STARTING_VERBS, Clause, Reader, sounds_like_statement
 from app.domain.analysis.schemas import Grounded, ground_clause
 from app.domain.analysis.sketch import Sketch
 from app.domain.analysis.specifications import specifications
@@ -166,20 +166,16 @@ def _mark_carried_on(grounded: list[Grounded]) -> None:
             first.carried_on = True
 
 
-_STARTERS = frozenset({"start", "set", "get"})
-
-
 def _started_to_run(clauses: tuple[Clause, ...]) -> frozenset[int]:
     """The clauses that set something going for the rest of the task: "start the sink
     filling, then ...", "get the engine running and ...": a process started so that it runs
     while the robot does the next thing, which switching it straight off would defeat."""
     started: set[int] = set()
     for index, clause in enumerate(clauses):
-        if clause.kind != "step" or (clause.verb or "").split(" ")[0] not in _STARTERS:
+        if clause.kind != "step" or (clause.verb or "").split(" ")[0] not in STARTING_VERBS:
             continue
         words = set(clause.text.replace("'", " ").split())
-        if clause.verb == "start" or words & (_STILL_RUNNING | {"going"}) or \
-                clause.complement in ("going", "running"):
+        if clause.verb == "start" or words & (_STILL_RUNNING | {"going"}):
             started.add(index)
     return frozenset(started)
 
