@@ -292,12 +292,13 @@ class Grounder(PeopleGrounding):
                     self._holds_substance(obj, head)):
                 typed.append(obj.id)
         found = exact or typed
-        if not found and len(phrase.modifiers) == 1:
-            # "the strobe light" and nothing else fits: the "PartyLight" whose id or name says
-            # strobe, a kind of light by the last word of its type
+        if not found and len(phrase.modifiers) <= 1:
+            # "the bottle" and nothing else fits: the "PillBottle", a kind of bottle by the
+            # last word of its type; "the strobe light": the "PartyLight" whose id or name
+            # says strobe
             found = [o.id for o in self.objects.values()
-                     if _CAMEL.sub(" ", o.type).split()[-1].lower() == head
-                     and phrase.modifiers[0] in words_of(o.id, o.name)]
+                     if singular(_CAMEL.sub(" ", o.type).split()[-1].lower()) == head
+                     and set(phrase.modifiers) <= words_of(o.id, o.name)]
         if not found and head in _KINDS_OF_STUFF and phrase.modifiers:
             # "the cleaning stuff", "the baking things": what the modifier's stem names
             stem = _STEM.sub("", phrase.modifiers[-1])

@@ -81,5 +81,6 @@ def _pet_names(command: str, state: WorldState, known: set[str]) -> dict[str, st
 
 
 _NAMED_RECEIVER = re.compile(
-    r"\b(?:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)\s+"
-    r"([A-Z][a-z]+)\s+(?:the|a|an|some|his|her|their|this|that|these|those|another|two)\b")
+    r"\b(?i:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)\s+"
+    r"([A-Z][a-z]+)\s+(?:the|a|an|some|his|her|their|this|that|these|those|another|two|one|"
+    r"my|your|our|any|more|something|both|all|half)\b")

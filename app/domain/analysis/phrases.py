@@ -111,6 +111,18 @@ def _without_time(words: list[str]) -> list[str]:
     return words
 
 
+_RELATIVE = frozenset({"that", "which", "who", "whom", "whose"})
+
+
+def _without_relative(words: list[str], lexicon: Lexicon) -> list[str]:
+    """ "the box that came this morning" -> "the box": a relative clause after a thing's noun
+    says something of the thing, and its words are no part of the thing's name."""
+    for index, word in enumerate(words[1:-1], 1):
+        if word in _RELATIVE and lexicon.is_thing(singular(words[index - 1])):
+            return words[:index]
+    return words
+
+
 # Words before "'s" that make a contraction, not an owner ("it's", "that's", "what's").
 _NOT_OWNERS = frozenset({"it", "that", "this", "there", "here", "what", "who", "where", "he",
                          "she", "let", "one", "everyone", "everything", "nobody", "somebody",
@@ -134,7 +146,7 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
         The phrase, or None for an empty one.
     """
     text = " ".join(words)
-    words = _without_time(words)
+    words = _without_relative(_without_time(words), lexicon)
     while len(words) > 1 and words[-1] in _TRAILING:
         words = words[:-1]
         if len(words) > 1 and words[-1] in ("real", "really", "very", "nice", "and"):

@@ -47,7 +47,7 @@ _ADVERB_PAIRS = frozenset({("upside", "down"), ("inside", "out"), ("right", "awa
                            ("face", "up"), ("face", "first"), ("as", "is")})
 _STRAY = frozenset({"handle-first", "blade-first", "point-first", "pls", "plz", "please",
                     "thanks", "thx", "ty", "cheers", "lol", "haha", "ugh", "hey", "oh", "ok",
-                    "okay", "btw", "asap"})
+                    "okay", "btw", "asap", "ta"})
 _SUBJECTS = frozenset({"it's", "its", "she's", "he's", "they're", "i'm", "we're", "there's",
                        "that's", "i", "she", "he", "they", "we", "you're", "i've", "i'll",
                        "it", "this", "there", "im", "theyre", "shes", "hes", "thats"})

@@ -148,13 +148,15 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
     """Ground a clause's words and choose its schema (no steps yet)."""
     g = builder.grounder
     before, before_single = g.last_object, g.last_single
+    # "give her one of Nana's tablets": the recipient stands before the thing in the words
+    # and is read first, so a person named inside the thing's phrase is never who "her" means
+    recipient = g.person(clause.second) if clause.second is not None else None
     objects = [g.any(np) for np in map(_less_setting, clause.objects) if not _setting(np)]
     objects = [_switchable_pronoun(g, clause, ref) for ref in objects]
     own = {i for r in objects for i in r.ids}
     if before and own and not own & set(before):
         g.last_object, g.last_single = before, before_single  # "pour water on it": not the water
         g.last_place = None
-    recipient = g.person(clause.second) if clause.second is not None else None
     grounded = Grounded(clause, index, None, objects, recipient)
     # Of several places, the last is where things go; "the chili in the dish into the
     # microwave": the dish only says where the chili is.
