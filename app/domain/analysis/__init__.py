@@ -31,7 +31,6 @@ from app.domain.analysis.lexicon import Lexicon, load_lexicon
 from app.domain.analysis.library import LibraryCache, judged_in_analysis
 from app.domain.analysis.questions import not_understood
 from app.domain.analysis.referents import USER_ID
-from app.domain.analysis.schemas import Grounded
 from app.domain.analysis.simulate import Trace, simulate
 from app.domain.analysis.sketch import variants
 from app.domain.analysis.understanding import Understanding, understand
@@ -113,7 +112,7 @@ class SymbolicAnalyzer:
                 question="The hazard library is empty; please ask an operator to load it."))
         elif steps:
             traces = simulate(read.scene, variants(read.sketch))
-            focus = _focus(read.scene, traces, read.grounded)
+            focus = _focus(read.scene, traces, read)
             active = [t for t in library if judged_in_analysis(t)]
             findings = judge(traces, active, focus, self._library)
             matrix = aggregate(findings, traces, focus, self._theta, USER_ID)
@@ -140,7 +139,8 @@ def _surroundings(scene: WorldState, touched: list[str]) -> list[str]:
     return [i for i in sorted(near) if scene.entity_type(i) == "object"]
 
 
-def _focus(scene: WorldState, traces: list[Trace], grounded: list[Grounded]) -> Focus:
+def _focus(scene: WorldState, traces: list[Trace], read: Understanding) -> Focus:
+    grounded = read.grounded
     touched: list[str] = []
     for trace in traces:
         for planned in trace.steps:
@@ -160,7 +160,11 @@ def _focus(scene: WorldState, traces: list[Trace], grounded: list[Grounded]) -> 
     named |= set(touched)
     rooms = tuple(dict.fromkeys(r for t in traces for s in (t.states[0], t.states[-1])
                                 for r in (s.robot.room,) if r))
-    return Focus(tuple(touched[:14]), tuple(scene.people), rooms, frozenset(named))
+    # "leave the iron on": what the command asks to leave as it is stays the task's doing
+    kept = frozenset((symbol, entities) for goal in read.sketch.goals if len(goal) == 1
+                     for symbol, entities, value in goal if value is True
+                     ) if read.sketch.leave else frozenset()
+    return Focus(tuple(touched[:14]), tuple(scene.people), rooms, frozenset(named), kept)
 
 
 def _declared_proposal(fired: Declared, library: list[HazardTemplate]) -> HazardProposal:

@@ -36,6 +36,9 @@ class Focus:
     rooms: tuple[str, ...]
     named: frozenset[str] = field(default_factory=frozenset)
     """Entities the command itself names: unknowns about them are the task's to settle."""
+    kept: frozenset[tuple[str, tuple[str, ...]]] = field(default_factory=frozenset)
+    """Facts the command asks to hold at the end ("leave the iron on"): a state that already
+    held before the task is then the task's doing too, since the command keeps it so."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -108,7 +111,8 @@ def _check_states(judged: JudgedTemplate, trace: Trace, args: dict[str, str | No
     return worst
 
 
-def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | None]
+def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | None],
+                  kept: frozenset[tuple[str, tuple[str, ...]]] = frozenset(),
                   ) -> tuple[bool, JudgedCondition, int] | None:
     worst: tuple[bool, JudgedCondition, int] | None = None
     guards = judged.guards
@@ -121,7 +125,8 @@ def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | No
         for judged_condition in conditions:
             if action.name == "Finish":
                 before = judged_condition.compiled(trace.states[0], args)
-                if before is False or (before is None and not _people_leave(trace)):
+                if (before is False and not _kept_by_command(judged_condition, args, kept)) or (
+                        before is None and not _people_leave(trace)):
                     continue  # what the end must not hold was there before the task began
                 # (undecided before, but the command sends its people out: then it is not)
             value = judged_condition.compiled(trace.states[index], args)
@@ -130,6 +135,15 @@ def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | No
             if value is None and worst is None:
                 worst = (False, judged_condition, index)
     return worst
+
+
+def _kept_by_command(condition: JudgedCondition, args: dict[str, str | None],
+                     kept: frozenset[tuple[str, tuple[str, ...]]]) -> bool:
+    """Whether the condition speaks of a fact the command asks to keep, of the entities it
+    is bound to ("leave the iron on" and "no heat source left on" of that iron)."""
+    bound = {v for v in args.values() if v}
+    formula = condition.condition.formula
+    return any(f"{symbol}(" in formula and set(entities) <= bound for symbol, entities in kept)
 
 
 def _people_leave(trace: Trace) -> bool:
@@ -165,7 +179,7 @@ def judge(traces: Sequence[Trace], templates: Iterable[HazardTemplate], focus: F
             for trace in traces:
                 result = _check_states(judged, trace, base) if judged.every_state else None
                 if result is None or not result[0]:
-                    guarded = _check_guards(judged, trace, dict(base))
+                    guarded = _check_guards(judged, trace, dict(base), focus.kept)
                     if guarded is not None and (result is None or guarded[0]):
                         result = guarded
                         step_at = guarded[2]

@@ -145,7 +145,11 @@ def variants(sketch: Sketch) -> list[Variant]:
                 else:
                     steps.append(item)
             if careful and not sketch.leave:
-                steps = _with_cleanup(steps, sketch.cleanup, sketch.running)
+                # the clean-up comes before the wait at the end: the result that stands
+                # "overnight" or "till we're back" is what the robot leaves behind
+                waits = [s for s in steps[-1:] if s.action.name == "Wait"]
+                steps = _with_cleanup(steps[:len(steps) - len(waits)], sketch.cleanup,
+                                      sketch.running) + waits
             label = ("careful" if careful else "careless") + (
                 f" ({', '.join(labels)})" if labels else "")
             found.append(Variant(tuple(_paced(s, careful, sketch.fast) for s in steps),

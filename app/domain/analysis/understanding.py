@@ -18,6 +18,7 @@ from dataclasses import dataclass, field, replace
 from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
 from app.domain.analysis.grounding import Grounder
 from app.domain.analysis.handlers import apply_clause
+from app.domain.analysis.horizon import hours_left_standing, who_sleeps
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.names import scene_names
 from app.domain.analysis.questions import not_understood, which_one
@@ -104,9 +105,16 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
             if len(builder.sketch.literal) + len(builder.notes) == before and _acts(item):
                 idle.append(item)
     leaving = _leaving(request.command, grounder)
-    if leaving and any(True for _ in builder.sketch.steps()):
-        # "I'm off to work", "so it's hot when we get back": the speaker is out meanwhile
-        builder.act("Wait", kind="enabling", seconds=3600.0, away=",".join(leaving))
+    hours = hours_left_standing(request.command)
+    if (leaving or hours) and any(True for _ in builder.sketch.steps()):
+        # "I'm off to work", "so it's hot when we get back": the speaker is out meanwhile;
+        # "overnight", "all weekend": the result stands that long by itself
+        meanwhile = {"away": ",".join(leaving)} if leaving else {}
+        sleeping = who_sleeps(request.command)
+        if sleeping is not None:
+            meanwhile["asleep"] = grounder.user_id if sleeping == "i" else ",".join(
+                grounder.people)
+        builder.act("Wait", kind="enabling", seconds=3600.0 * (hours or 1.0), **meanwhile)
     builder.sketch.fast = "fast" in reading.manner
     builder.sketch.leave = "leave" in reading.manner or _kept_going(reading.clauses)
     builder.sketch.running = _started_to_run(reading.clauses)
@@ -181,7 +189,8 @@ def _started_to_run(clauses: tuple[Clause, ...]) -> frozenset[int]:
 
 
 _SPEAKER_LEAVES = re.compile(
-    r"\b(?:(i|we)(?:'m|'re| am| are)(?: all)? (?:off\b|going out|heading out|leaving|"
+    r"\b(?:(i|we)(?:'m|'re| am| are)(?: all)? (?:off\b|going out|heading out|heading to|leaving|"
+    r"out (?:all|for|till|until)\b|"
     r"out for|away for|going to (?:work|bed|the)|popping out|nipping out)"
     r"|(?:when|till|until|before) (i|we)(?: get| come)? (?:back|home|return)"
     r"|(?:when|till|until) (i|we)(?:'m|'re| am| are) (?:back|home)"

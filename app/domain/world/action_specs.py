@@ -236,8 +236,11 @@ _SPECS = (
         "Wait", "do nothing for a while",
         params=(Param("seconds", "number", "how long to wait"),
                 Param("away", "string", "people who leave the home meanwhile (ids, comma "
-                      "separated): what the command says of its speaker going out")),
-        effects=("the robot stands still; the people named in `away` are out of the home",)),
+                      "separated): what the command says of its speaker going out"),
+                Param("asleep", "string", "people who go to sleep meanwhile (ids, comma "
+                      "separated): \"while we sleep\"")),
+        effects=("the robot stands still; the people named in `away` are out of the home, "
+                 "those named in `asleep` asleep",)),
 )
 
 ACTION_SPECS: dict[str, ActionSpec] = {spec.name: spec for spec in _SPECS}

@@ -391,6 +391,11 @@ def _needs_walking_aid(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return mobility in {"assisted", "wheelchair"}
 
 
+@_rule("hours_waited")
+def _hours_waited(state: WorldState, args: tuple[str, ...]) -> FactValue:
+    return state.robot.hours_waited
+
+
 @_rule("noisy")
 def _noisy(state: WorldState, args: tuple[str, ...]) -> FactValue:
     return state.robot.noisy

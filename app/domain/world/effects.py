@@ -333,11 +333,25 @@ def _record(draft: _Draft, action: Action) -> None:
     draft.robot = replace(draft.robot, recording=True)
 
 
+def _wait(draft: _Draft, action: Action) -> None:
+    seconds = action.params.get("seconds")
+    if isinstance(seconds, (int, float)) and seconds > 0:
+        draft.robot = replace(draft.robot,
+                              hours_waited=draft.robot.hours_waited + float(seconds) / 3600)
+    _people_leave(draft, action)
+
+
 def _people_leave(draft: _Draft, action: Action) -> None:
     away = action.params.get("away")
     for person in str(away).split(",") if away else ():
         if person in draft.people:
             draft.people[person] = replace(draft.people[person], room=AWAY, position=None)
+    asleep = action.params.get("asleep")
+    for person in str(asleep).split(",") if asleep else ():
+        if person in draft.people:
+            state = draft.people[person]
+            draft.people[person] = replace(state, properties=frozen_mapping(
+                {**state.properties, "cognitive_state": "asleep"}))
 
 
 _LISTED_EMPTY = frozenset({"Bowl", "Plate", "Cup", "Mug", "Glass", "WineGlass", "ShotGlass",
@@ -393,7 +407,7 @@ _EFFECTS: dict[str, Callable[[_Draft, Action], None]] = {
     "Assist": lambda d, a: _go_to_entity(d, a, a.object or ""),
     "Record": _record,
     "Finish": lambda d, a: None,
-    "Wait": lambda d, a: _people_leave(d, a),
+    "Wait": _wait,
 }
 
 

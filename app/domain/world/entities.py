@@ -88,6 +88,9 @@ class RobotState:
     """Running something loud (a vacuum cleaner) in this state."""
     beside: str | None = None
     """The object or person the robot last moved next to (kept until it moves again)."""
+    hours_waited: float = 0.0
+    """How long the task has so far left its result standing by itself (its `Wait` steps):
+    "leave it on overnight" is not "leave it on while I fetch a shirt"."""
 
 
 def frozen_mapping(values: Mapping[str, Any]) -> Mapping[str, Any]:

@@ -168,10 +168,9 @@ def test_where_a_thing_to_pick_up_lies_is_not_where_it_goes(gate: Gate) -> None:
 
 
 def test_a_heater_kept_on_until_the_user_is_back_is_left_on(gate: Gate) -> None:
+    # nobody else at home: the iron stands on in an empty house
     scene = _home_with({"id": "iron_1", "type": "Iron", "room": "living_room",
-                        "on": "table_1", "properties": {"on": False}},
-                       people=[{"id": "dad", "role": "dad", "room": "hallway",
-                                "properties": {"age_group": "adult"}}])
+                        "on": "table_1", "properties": {"on": False}}, people=[])
     kept = gate(request("Switch the iron on so it's hot when I'm back from the shops.", scene))
     assert kept.decision is Decision.REJECT
     assert any(h.hazard_class == "appliance_left_on" for h in kept.trigger_hazards)

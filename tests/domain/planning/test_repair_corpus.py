@@ -38,7 +38,7 @@ def _corpus() -> list[Case]:
     assert result.contract is not None
     cases += [(name, plan, result.contract, state_from_request(tea))
               for name, plan in (("tea throw", THROW_PLAN), ("knife for dad", KNIFE_PLAN))]
-    for case in authorized(BENCHMARK, analyzer, limit=80):
+    for case in authorized(BENCHMARK, analyzer, limit=120):
         reference = reference_plan(case.request, case.contract, timeout_ms=TIMEOUT_MS,
                                    reader=analyzer)
         if reference.plan is None:
