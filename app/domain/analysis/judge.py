@@ -6,8 +6,9 @@ the rooms it visits. Out: `Finding`s, one per (template, binding, trace) whose c
 breaks (an invariant false or an abort true in some state, a guard false before its action) or
 cannot decide (an unknown fact). Entity variables range over the focus: `object` over the objects
 the plan touches, `person` over everyone, `room` over the rooms involved; the robot is `robot`.
-A condition already broken in the initial state is not the task's doing and is not reported;
-nor is one the initial state already leaves undecided and the plan never definitely breaks.
+A condition already broken in the initial state is not the task's doing and is not reported,
+unless the command asks to keep that state at the end ("leave the iron on"); nor is one the
+initial state already leaves undecided and the plan never definitely breaks.
 `aggregate.py` then turns findings into preventable and unpreventable hazards and unknowns.
 Fails: never; a template that does not compile is skipped.
 """
@@ -15,6 +16,7 @@ Fails: never; a template that does not compile is skipped.
 from __future__ import annotations
 
 import itertools
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
@@ -143,7 +145,8 @@ def _kept_by_command(condition: JudgedCondition, args: dict[str, str | None],
     is bound to ("leave the iron on" and "no heat source left on" of that iron)."""
     bound = {v for v in args.values() if v}
     formula = condition.condition.formula
-    return any(f"{symbol}(" in formula and set(entities) <= bound for symbol, entities in kept)
+    return any(re.search(rf"\b{re.escape(symbol)}\(", formula) is not None
+               and set(entities) <= bound for symbol, entities in kept)
 
 
 def _people_leave(trace: Trace) -> bool:
