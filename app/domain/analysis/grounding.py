@@ -46,6 +46,12 @@ _SIGNATURE = ("hot", "sharp", "toxic", "electrical", "breakable", "filled", "con
 _CLAUSE_MARKERS = frozenset({"that", "which", "who", "whom", "whose", "where", "when", "you",
                              "i", "he", "she", "we", "they", "it", "is", "are", "was", "were",
                              "has", "have", "had", "will", "would", "can", "could"})
+_FIXED_KG = 20.0
+"""A thing the simulator cannot pick up and at least this heavy stays where it is (an appliance,
+furniture): what it holds is taken out of it."""
+_LOAD_FACTS = frozenset({"flammable", "toxic", "wet", "hot", "temperature", "sharp",
+                         "allergen", "allergens", "dirty", "soaked"})
+"""What a scene says of a fixed thing's load rather than of the thing itself."""
 _EVERYTHING = frozenset({"lot", "everything", "all", "rest", "whole"})
 _ROBOT_PRONOUNS = frozenset({"yourself", "you", "yourselves"})
 # "a 40 degree cycle", "medium heat": a run of a machine, named by its setting.
@@ -57,6 +63,19 @@ _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z])")
 
 _LOCKED = frozenset({"locked", "child-locked", "childproof", "child-proof", "padlocked"})
 _INDEFINITE = frozenset({"everything", "anything", "something", "whatever"})
+
+
+def _last_words(*texts: str | None) -> set[str]:
+    """The nouns that head each name ("rail" of "heated towel rail", "kettle" of "kettle_2"):
+    what a phrase's head must be to name the thing by its kind, since "the towels" are no
+    towel rail."""
+    found: set[str] = set()
+    for text in texts:
+        words = [w for w in re.split(r"[\s_\-]+", _CAMEL.sub(" ", text or "").lower())
+                 if w and not w.isdigit()]
+        if words:
+            found |= {words[-1], singular(words[-1])}
+    return found
 
 
 def _names_a_room(phrase: NounPhrase) -> bool:
@@ -281,15 +300,15 @@ class Grounder(PeopleGrounding):
         exact, typed = [], []
         for obj in self.objects.values():
             names = words_of(obj.id, obj.name)
-            type_words = words_of(obj.type, obj.kind.name)
             if wanted <= names or normalize_type(phrase.phrase) == normalize_type(obj.id):
                 exact.append(obj.id)
-            elif head in type_words or head in names or normalize_type(
+            elif head in _last_words(obj.type, obj.kind.name, obj.id, obj.name) or normalize_type(
                     phrase.phrase) == normalize_type(obj.type) or (
                     kind.name == obj.kind.name and kind.name != phrase.phrase) or (
                     concept is not None and concept.name != "generic"
                     and concept_of(obj.type) == concept and len(concept.types) <= 1) or (
-                    self._holds_substance(obj, head)):
+                    self._holds_substance(obj, head) and (
+                        self._carried(obj.id) or substance_trait(head, "liquid") is True)):
                 typed.append(obj.id)
         found = exact or typed
         if not found and len(phrase.modifiers) <= 1:
@@ -314,6 +333,16 @@ class Grounder(PeopleGrounding):
                 found = holders
         return found
 
+    def _carried(self, object_id: str) -> bool:
+        """Whether the thing can be carried about: "the wet towels" a washing machine holds
+        are the towels, taken out of it, never the machine (but "the water" in the bath is the
+        bath's: a liquid is run, drained or poured through what holds it)."""
+        if self._base.value("pickupable", (object_id,)) is not False:
+            return True
+        mass = self._base.value("mass_kg", (object_id,))
+        # a bin bag is carried out full; a washing machine or a fridge never moves
+        return isinstance(mass, float) and mass < _FIXED_KG
+
     def _holds_substance(self, obj: ObjectState, word: str) -> bool:
         contents = obj.facts.get("contents", obj.properties.get("contents"))
         return isinstance(contents, str) and word in words_of(contents)
@@ -328,8 +357,16 @@ class Grounder(PeopleGrounding):
                     not wanted)]
                 kept = fits or possible or kept
                 continue
+            room = self.lexicon.rooms.get(modifier)
+            if room is not None:
+                # "the hall table": the table in the hallway
+                inside = [i for i in kept if normalize_type(room) in normalize_type(
+                    self.objects[i].room or "")]
+                kept = inside or kept
+                continue
             named = [i for i in kept if modifier in words_of(
                 i, self.objects[i].name, self.objects[i].type,
+                _CAMEL.sub(" ", self.objects[i].type),
                 *(str(v) for v in self.objects[i].properties.values()))]
             kept = named or kept
         if phrase.possessor:
@@ -346,6 +383,11 @@ class Grounder(PeopleGrounding):
 
     def _object(self, phrase: NounPhrase, *, place: bool = False) -> Referent:
         ids = self._narrow(self._object_matches(phrase), phrase)
+        held = None if ids or place else self._taken_out(phrase)
+        if held is not None:
+            return held
+        if not ids:
+            ids = self._narrow(self._named_in_passing(phrase), phrase)
         if ids:
             ids.sort()
             plural = phrase.every or phrase.head in _KINDS_OF_STUFF - {"thing", "product"} or (
@@ -371,6 +413,32 @@ class Grounder(PeopleGrounding):
         if part_of is not None:
             return part_of
         return self._new_object(phrase, place=place)
+
+    def _named_in_passing(self, phrase: NounPhrase) -> list[str]:
+        """Things whose name has the phrase's noun anywhere in it, when none is named by it:
+        "the walk-in freezer" is the "walk-in freezer door" the scene lists."""
+        head = singular(phrase.head or "")
+        return [o.id for o in self.objects.values()
+                if head and head in words_of(o.id, o.name, o.type, o.kind.name)]
+
+    def _taken_out(self, phrase: NounPhrase) -> Referent | None:
+        """ "the darks from the hamper", "the wet towels" in the washing machine: what one
+        fixed thing the scene says holds, as a thing of its own inside it, with the hazards the
+        scene states of the load (oily rags are flammable, taken out or not)."""
+        head = singular(phrase.head or "")
+        holders = [o for o in self.objects.values() if not self._carried(o.id)
+                   and self._holds_substance(o, head)]
+        if len(holders) != 1 or substance_trait(head, "liquid") is True:
+            return None
+        holder = holders[0]
+        load = str(holder.facts.get("contents", holder.properties.get("contents")))
+        stated = {k: v for k, v in holder.properties.items() if k in _LOAD_FACTS}
+        object_id = f"new_{normalize_type(phrase.phrase) or 'load'}"
+        self.objects[object_id] = ObjectState(
+            id=object_id, type=load, room=holder.room, parent=holder.id, relation="in",
+            properties=frozen_mapping(stated))
+        self.last_object = self.last_single = (object_id,)
+        return Referent(phrase, "object", (object_id,), new=True)
 
     def _part_of(self, phrase: NounPhrase) -> Referent | None:
         """ "Ivy's high chair tray", "the fridge door shelf": a place named as a part of one

@@ -2,7 +2,9 @@
 the PillBottle), a recipient read before the thing it receives ("give her one of Nana's
 tablets"), a name after a giving verb at the start of a sentence ("Give Leo one of ..."), a
 relative clause that describes a thing without naming it ("the box that came this morning"),
-and "ta" as thanks. Each hazard has a twin that differs in the one fact that makes it one."""
+"ta" as thanks, a thing named by the noun that heads its name ("the towels" are no towel rail),
+and what a washing machine holds taken out of it rather than the machine lifted. Each hazard has a
+twin that differs in the one fact that makes it one."""
 
 from __future__ import annotations
 
@@ -95,3 +97,40 @@ class TestARelativeClauseDescribesTheThing:
         assert ("PickupObject", "box_1", None) in steps
         assert not any(str(obj).startswith("new_") or str(target).startswith("new_ta")
                        for _, obj, target in steps)
+
+
+WASHER = {"id": "washer_1", "type": "WashingMachine", "room": "kitchen",
+          "properties": {"contents": "wet towels", "open": False}}
+TOWEL_RAIL = {"id": "rail_1", "type": "heated towel rail", "room": "kitchen"}
+HALL_TABLE = {"id": "hall_table_1", "type": "SideTable", "room": "hallway"}
+KEYS = {"id": "keys_1", "type": "KeyChain", "room": "hallway", "on": "hall_table_1"}
+
+
+class TestAThingIsNamedByTheNounThatHeadsIt:
+    def test_the_towels_are_no_towel_rail(self) -> None:
+        steps = plan_steps("take the wet towels out of the washer and hang them on the rail",
+                           home_with(WASHER, TOWEL_RAIL))
+        assert ("PickupObject", "rail_1", None) not in steps
+        assert ("PickupObject", "washer_1", None) not in steps
+
+    def test_what_a_washing_machine_holds_is_taken_out_of_it(self) -> None:
+        steps = plan_steps("take the wet towels out of the washer", home_with(WASHER))
+        picked = [obj for action, obj, _ in steps if action == "PickupObject"]
+        assert picked and picked[0] != "washer_1"
+        assert steps.index(("OpenObject", "washer_1", None)) < steps.index(
+            ("PickupObject", picked[0], None))
+
+    def test_the_water_in_the_sink_is_still_the_sinks(self) -> None:
+        sink = {"id": "sink_2", "type": "SinkBasin", "room": "hallway",
+                "properties": {"contents": "water"}}
+        steps = plan_steps("drain the water", home_with(sink))
+        assert not any(str(obj).startswith("new_water") for _, obj, _ in steps)
+
+    def test_the_hall_table_is_the_table_in_the_hallway(self) -> None:
+        steps = plan_steps("give dad the keys off the hall table", home_with(HALL_TABLE, KEYS))
+        assert ("HandOver", "keys_1", "dad") in steps
+
+    def test_a_noun_anywhere_in_a_name_when_nothing_is_headed_by_it(self) -> None:
+        door = {"id": "door_9", "type": "walk-in freezer door", "room": "kitchen"}
+        steps = plan_steps("lock the walk-in freezer", home_with(door))
+        assert ("LockObject", "door_9", None) in steps
