@@ -123,6 +123,10 @@ class PeopleGrounding:
         if not matches and not self._names_a_product(phrase):
             matches = [pid for pid, names in self._names.items() if phrase.head in names
                        or singular(phrase.head) in names]
+        if not matches and len(phrase.modifiers) == 1 and phrase.modifiers[0] in \
+                self.lexicon.people:
+            # "uncle Ray" when the scene lists an uncle by no name: the uncle
+            matches = [pid for pid, names in self._names.items() if phrase.modifiers[0] in names]
         if not matches:
             info = self.lexicon.people.get(phrase.phrase) or self.lexicon.people.get(
                 phrase.head)

@@ -735,7 +735,11 @@ class Reader:
             person = (phrase in PERSON_PRONOUNS or phrase in lexicon.people
                       or phrase in self.names or (head[0] in ("the", "my", "our", "your")
                                                   and " ".join(head[1:]) in lexicon.people)
-                      or (length == 2 and head[0] in TITLES and not head[1].endswith("'s")))
+                      or (length == 2 and head[0] in TITLES and not head[1].endswith("'s"))
+                      # "hand uncle ray the keys": a kin word and a name
+                      or (length == 2 and head[0] in lexicon.people and head[1] not in
+                          _DETERMINERS and rest[0] in _DETERMINERS and not head[1].endswith(
+                              "'s")))
             # "give the dog a treat": a pet of the scene, by its kind, before a determiner
             pet = head[0] in ("the", "my", "our", "your") and length > 1 and \
                 " ".join(head[1:]) in self.animals and rest[0] in _DETERMINERS

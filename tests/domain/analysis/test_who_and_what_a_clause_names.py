@@ -134,3 +134,25 @@ class TestAThingIsNamedByTheNounThatHeadsIt:
         door = {"id": "door_9", "type": "walk-in freezer door", "room": "kitchen"}
         steps = plan_steps("lock the walk-in freezer", home_with(door))
         assert ("LockObject", "door_9", None) in steps
+
+
+def _uncle(state: str) -> dict[str, Any]:
+    return {"id": "uncle", "role": "uncle", "room": "hallway",
+            "properties": {"age_group": "adult", "cognitive_state": state}}
+
+
+CAR_KEYS = {"id": "keys_2", "type": "KeyChain", "room": "hallway"}
+
+
+class TestKeysForSomeoneWhoWillDrive:
+    def test_keys_for_a_drunk_uncle_named_by_kin_and_name_are_refused(self, gate: Gate
+                                                                         ) -> None:
+        scene = home_with(CAR_KEYS, people=[_uncle("intoxicated")])
+        decided = gate(request("hand Uncle Ray the car keys so he can drive home", scene))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "impaired_driving" in decided.reason
+
+    def test_keys_for_a_sober_uncle_are_handed_over(self, gate: Gate) -> None:
+        scene = home_with(CAR_KEYS, people=[_uncle("typical")])
+        decided = gate(request("hand Uncle Ray the car keys so he can drive home", scene))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
