@@ -82,8 +82,8 @@ def _timed_in_a_cooker(builder: PlanBuilder, grounded: Grounded) -> bool:
 # Verbs whose object is the container a task fills or empties ("load the dishwasher",
 # "unpack the shopping bag"), not the thing moved.
 _FILLING = frozenset({"load", "pack", "stock", "restock"})
-_EMPTYING = frozenset({"unload", "unpack", "empty out", "clear out", "clear", "clear off",
-                       "clear away", "strip"})
+_EMPTYING = frozenset({"unload", "unpack", "empty", "empty out", "clear out", "clear",
+                       "clear off", "clear away", "strip"})
 
 
 def _container_task(builder: PlanBuilder, grounded: Grounded) -> bool:

@@ -45,8 +45,9 @@ def scene_names(command: str, state: WorldState, lexicon: Lexicon) -> SceneNames
         lexicon.is_thing(w) or lexicon.is_verb(w) or w in lexicon.rooms or w in lexicon.people)}
     # "hand Tom the scissors", "give Poppy some grapes": a capitalised word between a giving
     # verb and what is given is the receiver's name, though a dictionary lists it as a thing
-    given |= {m.group(1).lower() for m in _NAMED_RECEIVER.finditer(command)} - names \
-        - scene_words - set(lexicon.people) - set(lexicon.rooms)
+    given |= {m.group(1).lower() for pattern in (_NAMED_RECEIVER, _NAMED_AFTER_TO)
+              for m in pattern.finditer(command)} - names - scene_words - set(
+        lexicon.people) - set(lexicon.rooms) - _TIMES
     animals = {w for o in state.objects.values() if state.value("animal", (o.id,)) is True
                for n in (o.type, o.properties.get("species")) if isinstance(n, str)
                for w in (n.lower(), *re.findall(r"[a-z]+", n.lower()))}
@@ -80,6 +81,17 @@ def _pet_names(command: str, state: WorldState, known: set[str]) -> dict[str, st
             if (w := m.group(1).lower()) not in known and w not in _NOT_A_NAME}
 
 
+_TIMES = frozenset({"monday", "tuesday", "wednesday", "thursday", "friday", "saturday",
+                    "sunday", "january", "february", "march", "april", "may", "june", "july",
+                    "august", "september", "october", "november", "december", "christmas",
+                    "easter", "halloween", "now", "later", "tonight", "today", "tomorrow"})
+"""Capitalised words of time ("for Christmas"): never a person's name."""
+
+# "pass the handsaw to Ben", "make a sandwich for Poppy": a capitalised word after "to" or
+# "for" in a clause that hands or makes something is who receives it
+_NAMED_AFTER_TO = re.compile(
+    r"\b(?i:hand|give|pass|bring|take|fetch|get|send|show|offer|make|pour)\b[^.,;:!?]*?"
+    r"\b(?:to|for) ([A-Z][a-z]+)\b(?!')")
 _NAMED_RECEIVER = re.compile(
     r"\b(?i:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)\s+"
     r"([A-Z][a-z]+)\s+(?:the|a|an|some|his|her|their|this|that|these|those|another|two|one|"

@@ -111,12 +111,14 @@ def _without_time(words: list[str]) -> list[str]:
     return words
 
 
-_RELATIVE = frozenset({"that", "which", "who", "whom", "whose"})
+_RELATIVE = frozenset({"that", "which", "who", "whom", "whose", "should", "will", "must",
+                       "might"})
 
 
 def _without_relative(words: list[str], lexicon: Lexicon) -> list[str]:
-    """ "the box that came this morning" -> "the box": a relative clause after a thing's noun
-    says something of the thing, and its words are no part of the thing's name."""
+    """ "the box that came this morning" -> "the box", "the microwave should do it" -> "the
+    microwave": a relative clause or a predicate after a thing's noun says something of the
+    thing, and its words are no part of the thing's name."""
     for index, word in enumerate(words[1:-1], 1):
         if word in _RELATIVE and lexicon.is_thing(singular(words[index - 1])):
             return words[:index]

@@ -57,6 +57,9 @@ class Sketch:
     cleanup: list[Planned] = field(default_factory=list)
     fast: bool = False
     leave: bool = False
+    stands: bool = False
+    """The plan ends with a wait while its result stands ("overnight", "till we're back"):
+    the careful clean-up comes before that wait, since what stands is what the robot left."""
     running: frozenset[int] = frozenset()
     """Clauses that start something the command wants running through the rest of the task
     ("start the sink filling, then ..."): the careful plan switches those off only at the end."""
@@ -145,9 +148,7 @@ def variants(sketch: Sketch) -> list[Variant]:
                 else:
                     steps.append(item)
             if careful and not sketch.leave:
-                # the clean-up comes before the wait at the end: the result that stands
-                # "overnight" or "till we're back" is what the robot leaves behind
-                waits = [s for s in steps[-1:] if s.action.name == "Wait"]
+                waits = steps[-1:] if sketch.stands else []
                 steps = _with_cleanup(steps[:len(steps) - len(waits)], sketch.cleanup,
                                       sketch.running) + waits
             label = ("careful" if careful else "careless") + (

@@ -21,6 +21,7 @@ from app.domain.analysis.handlers import apply_clause
 from app.domain.analysis.horizon import hours_left_standing, who_sleeps
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.names import scene_names
+from app.domain.analysis.phrases import TIME_UNITS
 from app.domain.analysis.questions import not_understood, which_one
 from app.domain.analysis.reader import STARTING_VERBS, Clause, Reader, sounds_like_statement
 from app.domain.analysis.schemas import Grounded, ground_clause
@@ -97,6 +98,7 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
             _cancel(grounded, item)
         grounded.append(item)
     _mark_carried_on(grounded)
+    _fold_cooking_times(grounded)
     idle: list[Grounded] = []
     for item in grounded:
         if not item.cancelled:
@@ -114,7 +116,8 @@ def understand(request: GateRequest, lexicon: Lexicon) -> Understanding:
         if sleeping is not None:
             meanwhile["asleep"] = grounder.user_id if sleeping == "i" else ",".join(
                 grounder.people)
-        builder.act("Wait", kind="enabling", seconds=3600.0 * (hours or 1.0), **meanwhile)
+        builder.sketch.stands = builder.act("Wait", kind="enabling",
+                                            seconds=3600.0 * (hours or 1.0), **meanwhile)
     builder.sketch.fast = "fast" in reading.manner
     builder.sketch.leave = "leave" in reading.manner or _kept_going(reading.clauses)
     builder.sketch.running = _started_to_run(reading.clauses)
@@ -162,6 +165,20 @@ def _kept_going(clauses: tuple[Clause, ...]) -> bool:
                 "till", "until", "when", "so", "so that", "for when"))
             kept = kept or bool(words & _KEEP_STATES) or clause.opener in ("till", "until")
     return returning and kept
+
+
+def _fold_cooking_times(grounded: list[Grounded]) -> None:
+    """ "Heat up the soup. Two minutes in the microwave should do it": a clause that only
+    names a length of time in a place says where and how long the clause before it cooks,
+    and is no step of its own."""
+    for first, then in itertools.pairwise(grounded):
+        timed = bool(then.clause.objects) and all(
+            (np.head or "") in TIME_UNITS for np in then.clause.objects)
+        if first.schema == "heat" and timed and then.destination is not None and \
+                then.destination.ids and not then.destination.new and not then.cancelled and (
+                first.destination is None or not first.destination.ids):
+            first.destination = then.destination
+            then.cancelled = True
 
 
 def _mark_carried_on(grounded: list[Grounded]) -> None:

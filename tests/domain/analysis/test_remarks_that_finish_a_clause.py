@@ -1,0 +1,81 @@
+"""Remarks that finish the clause before them or name who it is for: "Two minutes in the
+microwave should do it" says where the soup before it heats; "pass the handsaw to Ben" names
+the child who receives it, though the scene lists him by no name; "empty the dishwasher" takes
+things out of a machine that never moves. Each hazard has a twin that differs in the one fact
+that makes it one."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from app.domain.analysis import SymbolicAnalyzer
+from app.domain.analysis.sketch import variants
+from app.domain.analysis.understanding import understand
+from app.domain.gate import Decision, GateDecision
+from app.domain.models import GateRequest
+from tests.domain.analysis.conftest import home_with, plan_steps, request
+
+Gate = Callable[[GateRequest], GateDecision]
+LEXICON = SymbolicAnalyzer()._lexicon
+
+
+def _soup(material: str) -> dict[str, Any]:
+    return {"id": "soup_bowl_1", "type": "Bowl", "room": "kitchen", "on": "counter_1",
+            "properties": {"contents": "lentil soup", "material": material}}
+
+
+SOUP_AND_THEN = "Heat up the soup for Dad. Two minutes in the microwave should do it."
+
+
+class TestACookingTimeNamesWhereTheClauseBeforeCooks:
+    def test_a_steel_bowl_warmed_in_the_microwave_named_after_is_refused(self, gate: Gate
+                                                                          ) -> None:
+        decided = gate(request(SOUP_AND_THEN, home_with(_soup("stainless steel"))))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "microwave_metal" in decided.reason
+
+    def test_a_ceramic_bowl_warmed_there_is_fine(self, gate: Gate) -> None:
+        decided = gate(request(SOUP_AND_THEN, home_with(_soup("ceramic"))))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+    def test_the_remark_is_no_step_of_its_own(self) -> None:
+        steps = plan_steps(SOUP_AND_THEN, home_with(_soup("ceramic")))
+        assert ("PutObject", "soup_bowl_1", "microwave_1") in steps
+        assert not any(str(obj).startswith("new_") for _, obj, _ in steps)
+
+    def test_the_cooking_wait_stays_before_the_food_comes_out(self) -> None:
+        read = understand(request("heat the soup in the microwave", home_with(_soup(
+            "ceramic"))), LEXICON)
+        careful = next(v for v in variants(read.sketch) if v.careful)
+        names = [p.action.name for p in careful.steps]
+        assert names.index("Wait") < names.index("OpenObject", names.index("ToggleObjectOn"))
+
+
+NIECE = {"id": "niece", "role": "niece", "room": "kitchen",
+         "properties": {"age_group": "child", "age": 5}}
+AUNT = {"id": "aunt", "role": "aunt", "room": "kitchen", "properties": {"age_group": "adult"}}
+
+
+class TestANameAfterTo:
+    def test_the_knife_to_a_child_named_only_in_the_command_is_refused(self, gate: Gate
+                                                                       ) -> None:
+        scene = home_with(people=[NIECE, AUNT])
+        decided = gate(request("Hand the knife to Poppy, she wants to help chop.", scene,
+                               user={"person_id": "aunt"}))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "sharp_handover" in decided.reason
+
+    def test_the_knife_to_the_adult_by_her_name_is_not_refused(self, gate: Gate) -> None:
+        aunt = {**AUNT, "properties": {"age_group": "adult", "name": "Jo"}}
+        scene = home_with(people=[NIECE, aunt])
+        decided = gate(request("Hand the knife to Jo, she wants to help chop.", scene))
+        assert decided.decision is not Decision.REJECT, decided.reason
+
+
+def test_emptying_a_dishwasher_never_lifts_it() -> None:
+    dishwasher = {"id": "dishwasher_1", "type": "Dishwasher", "room": "kitchen",
+                  "properties": {"open": False}}
+    steps = plan_steps("empty the dishwasher for me", home_with(dishwasher))
+    assert ("PickupObject", "dishwasher_1", None) not in steps
+    assert steps[0] == ("GoToObject", "dishwasher_1", None)
