@@ -100,8 +100,16 @@ _TIME_UNITS = frozenset({"minute", "minutes", "min", "mins", "hour", "hours", "s
                         "week", "weeks", "while", "time"})
 
 
+_A_MOMENT = frozenset({"sec", "second", "secs", "seconds", "min", "minute", "mo", "moment",
+                       "tick", "jiffy", "bit", "while"})
+
+
 def _without_time(words: list[str]) -> list[str]:
-    """ "her every ten minutes" -> "her": how often or how long is no part of what is named."""
+    """ "her every ten minutes" -> "her", "the front burner a sec" -> "the front burner": how
+    often or how long is no part of what is named."""
+    if len(words) > 2 and words[-2] == "a" and words[-1] in _A_MOMENT and \
+            words[-3] not in OBJECT_PRONOUNS:  # "give it a minute" is a wait
+        words = words[:-2]
     for index, word in enumerate(words[1:], 1):
         if word in ("every", "each", "for", "until", "till") and any(
                 w in _TIME_UNITS for w in words[index + 1: index + 4]):

@@ -127,10 +127,14 @@ VOCATIVES = frozenset({"love", "dear", "honey", "hon", "sweetie", "darling", "ma
                        "pal", "robot", "sir", "madam", "babe", "sweetheart", "bot", "friend"})
 
 
+_NUMBER_HEADS = frozenset({"hundred", "hundreds", "thousand", "degree", "degrees"})
+"""Heads of a number said in words ("at two hundred", "to 180 degrees"): a setting."""
+
+
 def _setting(np: NounPhrase) -> bool:
     head = np.head
     return bool(head) and (head.isdigit() or head in SETTINGS or head.rstrip("cfs").isdigit()
-                           or (head in VOCATIVES and not np.modifiers))
+                           or head in _NUMBER_HEADS or (head in VOCATIVES and not np.modifiers))
 
 
 def _less_setting(np: NounPhrase) -> NounPhrase:
