@@ -130,12 +130,14 @@ _BESIDE = frozenset({"next_to", "beside", "touching", "against"})
 
 
 def _surroundings(scene: WorldState, touched: list[str]) -> list[str]:
-    """What the scene puts right beside or inside the things the plan touches: the curtain a
-    lit candle touches, the oil in the pan put on the hob."""
+    """What the scene puts right beside, inside or on the things the plan touches: the curtain
+    a lit candle touches, the oil in the pan put on the hob, the tea towel left on the burner."""
     near = {o for s, rel, o in scene.relations if rel in _BESIDE and s in touched}
     near |= {s for s, rel, o in scene.relations if rel in _BESIDE and o in touched}
-    near |= {i for i, obj in scene.objects.items()
-             if obj.parent in touched and obj.relation == "in"}
+    near |= {i for i, obj in scene.objects.items() if obj.parent in touched and (
+        obj.relation == "in" or (obj.relation == "on" and True in (
+            scene.value("heat_source", (obj.parent,)), scene.value("toggleable", (
+                obj.parent,)))))}  # on a burner or a device, never all over a worktop
     return [i for i in sorted(near) if scene.entity_type(i) == "object"]
 
 

@@ -120,6 +120,9 @@ _INTO_PERSON = frozenset({"into", "in to", "through to", "round to"})
 _CARRYING = frozenset({"take", "bring", "carry", "run", "pop"})
 _SURFACE = frozenset({"on", "onto", "in", "into", "on top of", "inside", "back on", "back in",
                       "back into"})
+_INTO = frozenset({"into", "onto", "in to", "on to"})
+_STATIC_PLACE = frozenset({"on", "in", "at", "by", "beside", "next to", "under", "inside",
+                           "on top of", "near"})
 _ALONG_WITH = frozenset({"with", "along with", "together with", "and also"})
 
 
@@ -184,6 +187,9 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             _names_room(g, clause.roles[places[-1]][1]) and \
             not _names_room(g, clause.roles[places[-2]][1]):
         places.pop()  # "beside the heater in the garage": the garage says which heater
+    if len(places) > 1 and clause.roles[places[-2]][0] in _INTO and \
+            clause.roles[places[-1]][0] in _STATIC_PLACE:
+        places.pop()  # "into the plant pot on the TV stand": the stand says which pot
     if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
             clause.roles[places[-2]][0] in _SURFACE | _TOWARDS:
         grounded.beside = g.any(clause.roles[places[-1]][1], place=True)

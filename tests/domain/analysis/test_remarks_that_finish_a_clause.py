@@ -104,3 +104,51 @@ class TestHowLongAndHowHotAreNoPlaces:
     def test_give_it_a_minute_is_no_giving(self) -> None:
         steps = plan_steps("unplug the microwave and give it a minute", home_with())
         assert not any(action == "HandOver" for action, _, _ in steps)
+
+
+TEA_TOWEL = {"id": "towel_1", "type": "Cloth", "room": "kitchen", "on": "burner_2",
+             "properties": {"flammable": True}}
+COLD_BURNER = {"id": "burner_2", "type": "StoveBurner", "room": "kitchen",
+               "properties": {"on": False}}
+
+
+class TestWhatRestsOnWhatTheRobotSwitches:
+    def test_a_burner_with_a_tea_towel_on_it_is_not_lit(self, gate: Gate) -> None:
+        decided = gate(request("turn the burner on", home_with(COLD_BURNER, TEA_TOWEL)))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_a_clear_burner_is_lit(self, gate: Gate) -> None:
+        decided = gate(request("turn the burner on", home_with(COLD_BURNER)))
+        assert decided.decision is not Decision.REJECT, decided.reason
+
+
+def _toilet(contents: str) -> dict[str, Any]:
+    return {"id": "toilet_1", "type": "Toilet", "room": "kitchen",
+            "properties": {"contents": contents}}
+
+
+DESCALER = {"id": "descaler_1", "type": "SprayBottle", "room": "kitchen", "on": "counter_1",
+            "properties": {"contents": "acidic limescale remover", "toxic": True}}
+
+
+class TestBleachAndAnAcid:
+    def test_descaler_into_a_toilet_soaking_in_bleach_is_refused(self, gate: Gate) -> None:
+        decided = gate(request("squirt the descaler round the loo",
+                               home_with(_toilet("thick bleach, left to soak"), DESCALER)))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "chemical_mixing" in decided.reason
+
+    def test_descaler_into_a_rinsed_toilet_is_no_mixing(self, gate: Gate) -> None:
+        decided = gate(request("squirt the descaler round the loo",
+                               home_with(_toilet("clean water"), DESCALER)))
+        assert "chemical_mixing" not in decided.reason
+
+
+def test_into_a_pot_on_a_stand_pours_into_the_pot() -> None:
+    pot = {"id": "pot_1", "type": "HousePlant", "room": "living_room", "on": "stand_1"}
+    stand = {"id": "stand_1", "type": "TVStand", "room": "living_room"}
+    can = {"id": "can_1", "type": "WateringCan", "room": "living_room",
+           "properties": {"contents": "water"}}
+    steps = plan_steps("pour the watering can into the plant pot on the TV stand",
+                       home_with(pot, stand, can))
+    assert any(action == "Pour" and target == "pot_1" for action, _, target in steps)
