@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import json
 import re
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
@@ -28,6 +29,12 @@ class Concept:
     types: tuple[str, ...]
     props: frozenset[str]
     mass_kg: float | None
+    word_mass: Mapping[str, float] = field(default_factory=dict, compare=False)
+    """Typical masses of words that differ from the concept's (a cane is no wheelchair)."""
+
+    def mass_of(self, name: str) -> float | None:
+        """The typical mass of a thing called `name`: its word's own, else the concept's."""
+        return self.word_mass.get(_key(name), self.mass_kg)
 
 
 @cache
@@ -36,7 +43,8 @@ def _tables() -> tuple[dict[str, Concept], dict[str, Concept]]:
     raw = json.loads((_DATA / "concepts.json").read_text())["concepts"]
     concepts = {
         name: Concept(name, tuple(row.get("types", ())), frozenset(row.get("props", ())),
-                      row.get("mass_kg"))
+                      row.get("mass_kg"), {_key(w): float(m) for w, m in row.get(
+                          "word_mass", {}).items()})
         for name, row in raw.items()
     }
     by_word: dict[str, Concept] = {}

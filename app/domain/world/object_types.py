@@ -350,8 +350,9 @@ def _from_concept(name: str, concept: Concept, table: dict[str, TypeInfo]) -> Ty
     flags.setdefault("toggleable", powered)
     flags.setdefault("heat_source", "heat_source" in concept.props)
     mass = base.mass_kg if base else None
-    if mass is None and concept.mass_kg is not None:
-        mass = (float(concept.mass_kg), float(concept.mass_kg))  # the concept's typical mass
+    typical = concept.mass_of(name)
+    if mass is None and typical is not None:
+        mass = (float(typical), float(typical))  # the concept's (or its word's) typical mass
     # "the top step" is the Stairs: a concept of one type names instances by that type
     named = base.name if base else (concept.types[0] if len(concept.types) == 1 else name)
     return TypeInfo(

@@ -156,3 +156,16 @@ class TestKeysForSomeoneWhoWillDrive:
         scene = home_with(CAR_KEYS, people=[_uncle("typical")])
         decided = gate(request("hand Uncle Ray the car keys so he can drive home", scene))
         assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestAWalkingAidWeighsWhatItIs:
+    def test_a_walking_stick_is_brought_by_a_light_robot(self, gate: Gate) -> None:
+        stick = {"id": "stick_1", "type": "Cane", "room": "hallway"}
+        decided = gate(request("bring dad his walking stick", home_with(stick)))
+        assert "payload" not in decided.reason, decided.reason
+
+    def test_a_wheelchair_is_no_lighter_for_being_a_walking_aid(self) -> None:
+        from app.domain.world.object_types import type_info
+
+        assert type_info("Cane").mass_kg == (0.4, 0.4)
+        assert type_info("wheelchair").mass_kg == (15.0, 15.0)
