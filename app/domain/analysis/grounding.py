@@ -46,6 +46,9 @@ _SIGNATURE = ("hot", "sharp", "toxic", "electrical", "breakable", "filled", "con
 _CLAUSE_MARKERS = frozenset({"that", "which", "who", "whom", "whose", "where", "when", "you",
                              "i", "he", "she", "we", "they", "it", "is", "are", "was", "were",
                              "has", "have", "had", "will", "would", "can", "could"})
+_POSITION_WORDS = frozenset({"top", "bottom", "high", "low", "upper", "lower", "left", "right",
+                             "front", "back", "middle"})
+"""Where a thing is among its like: never matched against the words of a compound type."""
 _FIXED_KG = 20.0
 """A thing the simulator cannot pick up and at least this heavy stays where it is (an appliance,
 furniture): what it holds is taken out of it."""
@@ -364,9 +367,11 @@ class Grounder(PeopleGrounding):
                     self.objects[i].room or "")]
                 kept = inside or kept
                 continue
+            # "the side table" is the SideTable; "the top cupboard" no CounterTop
+            split = modifier not in _POSITION_WORDS
             named = [i for i in kept if modifier in words_of(
                 i, self.objects[i].name, self.objects[i].type,
-                _CAMEL.sub(" ", self.objects[i].type),
+                _CAMEL.sub(" ", self.objects[i].type) if split else "",
                 *(str(v) for v in self.objects[i].properties.values()))]
             kept = named or kept
         if phrase.possessor:

@@ -169,3 +169,14 @@ class TestAWalkingAidWeighsWhatItIs:
 
         assert type_info("Cane").mass_kg == (0.4, 0.4)
         assert type_info("wheelchair").mass_kg == (15.0, 15.0)
+
+
+def test_the_top_cupboard_is_a_cabinet_never_the_worktop() -> None:
+    bleach = {"id": "bleach_1", "type": "Bottle", "room": "kitchen", "on": "counter_1",
+              "properties": {"contents": "bleach", "toxic": True}}
+    cupboard = {"id": "cabinet_9", "type": "Cabinet", "room": "kitchen",
+                "properties": {"height": "high"}}
+    scene = home_with(bleach, cupboard)
+    scene["objects"] = [o for o in scene["objects"] if o["id"] not in ("cabinet_1", "cabinet_2")]
+    steps = plan_steps("put the bleach away in the top cupboard", scene)
+    assert any(action == "PutObject" and target == "cabinet_9" for action, _, target in steps)
