@@ -92,6 +92,7 @@ def _strip_determiners(words: list[str], lexicon: Lexicon) -> tuple[list[str], f
 
 _QUANTIFIERS = frozenset({"some", "any", "all", "both", "each", "few", "a", "couple", "several",
                           "most", "none", "one", "many", "lots", "plenty", "more", "rest"})
+_ROUGHLY = {"couple": 2.0, "few": 3.0, "several": 3.0}
 _TIME_OWNERS = frozenset({"today", "tonight", "yesterday", "tomorrow", "week", "weekend", "month",
                           "year", "monday", "tuesday", "wednesday", "thursday", "friday",
                           "saturday", "sunday", "last", "next", "this"})
@@ -180,6 +181,8 @@ def parse_phrase(words: list[str], lexicon: Lexicon) -> NounPhrase | None:
             words = after  # "two of grandad's pills", "some of the cake": the pills, the cake
             if before[-1] in lexicon.numbers:
                 quantity = lexicon.numbers[before[-1]]
+            elif before[-1] in _ROUGHLY:
+                quantity = _ROUGHLY[before[-1]]  # "a couple of biscuits": a counted handful
         elif before and after and (before[-1] in _PARTITIVES or before[-1] in _PARTS
                                    or singular(before[-1]) in lexicon.measures
                                    or not lexicon.is_thing(before[-1])):

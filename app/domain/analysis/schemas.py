@@ -243,7 +243,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
         # "it" after "a cup of tea, milk and two sugars" is the first thing named; "them" is all
         g.last_object = tuple(dict.fromkeys(i for r in objects for i in r.ids))
         g.last_single = next((r.ids for r in objects if r.ids), g.last_object)
-    _contents_of_containers(grounded, clause)
+    _contents_of_containers(g, grounded, clause)
     first_is_person = bool(objects) and objects[0].kind == "person"
     grounded.schema = _choose(clause, first_is_person, grounded.destination is not None)
     dest = grounded.destination
@@ -332,7 +332,7 @@ def _by_tool(builder: PlanBuilder, grounded: Grounded) -> None:
         grounded.schema = "switch_on"
 
 
-def _contents_of_containers(grounded: Grounded, clause: Clause) -> None:
+def _contents_of_containers(g: Grounder, grounded: Grounded, clause: Clause) -> None:
     """ "The leftovers in the foil tray": a thing the scene lacks, said to be in or on a scene
     container, is what that container holds; act on the container."""
     first = clause.roles[0] if clause.roles else None
@@ -344,8 +344,13 @@ def _contents_of_containers(grounded: Grounded, clause: Clause) -> None:
         return
     if holder is grounded.destination and clause.schemas[:1] == ("put",):
         return  # "put the cleaning stuff in the fridge": it goes in, it is not what is there
+    # "two tablets from the white bottle", "a couple of biscuits out of the tin": a counted
+    # handful of what a thing one carries holds is brought in it (never a cupboard, lifted)
+    carried = all(g.scene().value("pickupable", (i,)) is True for i in holder.ids) and bool(
+        holder.ids)
     for index, ref in enumerate(grounded.objects):
-        if ref.new and ref.kind == "object" and _could_be_contents(ref.phrase):
+        if ref.new and ref.kind == "object" and (_could_be_contents(ref.phrase) or (
+                carried and ref.phrase.quantity is not None)):
             # Out of one of two bowls: which one is the question, never a made-up thing.
             grounded.objects[index] = Referent(ref.phrase, "object", holder.ids,
                                                holder.candidates if not holder.ids else ())

@@ -152,3 +152,31 @@ def test_into_a_pot_on_a_stand_pours_into_the_pot() -> None:
     steps = plan_steps("pour the watering can into the plant pot on the TV stand",
                        home_with(pot, stand, can))
     assert any(action == "Pour" and target == "pot_1" for action, _, target in steps)
+
+
+COOKIE_TIN = {"id": "tin_1", "type": "Box", "room": "kitchen", "on": "counter_1",
+              "properties": {"shape": "round", "contents": "peanut butter cookies"}}
+
+
+def _ben(allergies: list[str]) -> dict[str, Any]:
+    return {"id": "ben", "role": "son", "room": "living_room",
+            "properties": {"age_group": "child", "age": 10, "allergies": allergies}}
+
+
+class TestAHandfulFromWhatHoldsIt:
+    def test_biscuits_from_a_tin_of_peanut_cookies_for_an_allergic_boy_are_refused(
+            self, gate: Gate) -> None:
+        decided = gate(request("Fetch Ben a couple of biscuits from the round tin.",
+                               home_with(COOKIE_TIN, people=[_ben(["peanut"])])))
+        assert decided.decision is Decision.REJECT, decided.reason
+        assert "allergen" in decided.reason
+
+    def test_the_same_for_a_boy_with_no_allergy_is_fine(self, gate: Gate) -> None:
+        decided = gate(request("Fetch Ben a couple of biscuits from the round tin.",
+                               home_with(COOKIE_TIN, people=[_ben([])])))
+        assert decided.decision is not Decision.REJECT, decided.reason
+
+    def test_a_cupboard_they_come_from_is_never_handed_over(self) -> None:
+        cabinet = {"id": "cab_9", "type": "Cabinet", "room": "kitchen"}
+        steps = plan_steps("give dad two of the tablets from the cabinet", home_with(cabinet))
+        assert ("HandOver", "cab_9", "dad") not in steps
