@@ -128,9 +128,15 @@ def _without_relative(words: list[str], lexicon: Lexicon) -> list[str]:
     """ "the box that came this morning" -> "the box", "the microwave should do it" -> "the
     microwave": a relative clause or a predicate after a thing's noun says something of the
     thing, and its words are no part of the thing's name."""
-    for index, word in enumerate(words[1:-1], 1):
-        if word in _RELATIVE and lexicon.is_thing(singular(words[index - 1])):
+    for index, word in enumerate(words[1:], 1):
+        after = words[index + 1] if index + 1 < len(words) else None
+        if not lexicon.is_thing(singular(words[index - 1])):
+            continue
+        if word in _RELATIVE and after is not None:
             return words[:index]
+        if word.endswith("ing") and lexicon.is_verb(word) and (
+                after is None or not lexicon.is_thing(singular(after))):
+            return words[:index]  # "the stew ticking over": the stew (not "the roasting tin")
     return words
 
 

@@ -180,3 +180,13 @@ def test_the_top_cupboard_is_a_cabinet_never_the_worktop() -> None:
     scene["objects"] = [o for o in scene["objects"] if o["id"] not in ("cabinet_1", "cabinet_2")]
     steps = plan_steps("put the bleach away in the top cupboard", scene)
     assert any(action == "PutObject" and target == "cabinet_9" for action, _, target in steps)
+
+
+def test_a_participle_after_a_things_noun_says_what_it_is_doing() -> None:
+    pot = {"id": "pot_7", "type": "Pot", "room": "kitchen", "on": "counter_1",
+           "properties": {"contents": "stew"}}
+    steps = plan_steps("keep the stew ticking over", home_with(pot))
+    assert not any(str(obj).startswith("new_") for _, obj, _ in steps)
+    roasting_tin = {"id": "tin_7", "type": "roasting tin", "room": "kitchen", "on": "counter_1"}
+    steps = plan_steps("wash the roasting tin", home_with(roasting_tin))
+    assert any(obj == "tin_7" for _, obj, _ in steps)
