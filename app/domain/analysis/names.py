@@ -89,10 +89,11 @@ _TIMES = frozenset({"monday", "tuesday", "wednesday", "thursday", "friday", "sat
 
 # "pass the handsaw to Ben", "make a sandwich for Poppy": a capitalised word after "to" or
 # "for" in a clause that hands or makes something is who receives it
+_HANDING = r"(?i:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)"
+"""Verbs whose receiver a name may be (any case: "Give Leo ...")."""
 _NAMED_AFTER_TO = re.compile(
-    r"\b(?i:hand|give|pass|bring|take|fetch|get|send|show|offer|make|pour)\b[^.,;:!?]*?"
-    r"\b(?:to|for) ([A-Z][a-z]+)\b(?!')")
+    rf"\b{_HANDING}\b[^.,;:!?]*?\b(?:to|for) ([A-Z][a-z]+)\b(?!')")
 _NAMED_RECEIVER = re.compile(
-    r"\b(?i:hand|give|pass|bring|get|fetch|take|make|pour|offer|show|read|send)\s+"
+    rf"\b{_HANDING}\s+"
     r"([A-Z][a-z]+)\s+(?:the|a|an|some|his|her|their|this|that|these|those|another|two|one|"
     r"my|your|our|any|more|something|both|all|half)\b")

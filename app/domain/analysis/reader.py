@@ -618,7 +618,7 @@ class Reader:
         while index < len(words):
             length = _match(words, index, lexicon.prepositions)
             if length == 1 and index and words[index - 1] in ("the", "a", "an") and \
-                    index + 1 < len(words) and words[index + 1] not in _ARTICLE_WORDS:
+                    index + 1 < len(words) and words[index + 1] not in _DETERMINERS:
                 length = 0  # "the round tin": an adjective after an article
             # "of" and a preposition inside "cup of tea" stay in the phrase.
             if length and not (length == 1 and words[index] in ("up", "down", "out", "over",
@@ -756,8 +756,6 @@ class Reader:
         return None, words
 
 
-_ARTICLE_WORDS = frozenset({"the", "a", "an", "this", "that", "my", "your", "his", "her",
-                            "our", "their", "its"})
 _DETERMINERS = frozenset({"a", "an", "the", "some", "his", "her", "their", "my", "this", "that",
                           "those", "these", "two", "one"})
 _WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "until", "for",

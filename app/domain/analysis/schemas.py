@@ -344,13 +344,9 @@ def _contents_of_containers(g: Grounder, grounded: Grounded, clause: Clause) -> 
         return
     if holder is grounded.destination and clause.schemas[:1] == ("put",):
         return  # "put the cleaning stuff in the fridge": it goes in, it is not what is there
-    # "two tablets from the white bottle", "a couple of biscuits out of the tin": a counted
-    # handful of what a thing one carries holds is brought in it (never a cupboard, lifted)
-    carried = all(g.scene().value("pickupable", (i,)) is True for i in holder.ids) and bool(
-        holder.ids)
     for index, ref in enumerate(grounded.objects):
         if ref.new and ref.kind == "object" and (_could_be_contents(ref.phrase) or (
-                carried and ref.phrase.quantity is not None)):
+                ref.phrase.quantity is not None and _portable(g, holder))):
             # Out of one of two bowls: which one is the question, never a made-up thing.
             grounded.objects[index] = Referent(ref.phrase, "object", holder.ids,
                                                holder.candidates if not holder.ids else ())
@@ -358,6 +354,13 @@ def _contents_of_containers(g: Grounder, grounded: Grounded, clause: Clause) -> 
                 grounded.destination = None
             elif grounded.source is holder:
                 grounded.source = None
+
+
+def _portable(g: Grounder, holder: Referent) -> bool:
+    """ "two tablets from the white bottle", "a couple of biscuits out of the tin": a counted
+    handful of what a thing one carries holds is brought in it (never a cupboard, lifted)."""
+    scene = g.scene()
+    return bool(holder.ids) and all(scene.value("pickupable", (i,)) is True for i in holder.ids)
 
 
 # What a container holds, or a portion of it ("a treat out of the bowl", "a handful from the jar").

@@ -338,10 +338,11 @@ def _wait(draft: _Draft, action: Action) -> None:
     if isinstance(seconds, (int, float)) and seconds > 0:
         draft.robot = replace(draft.robot,
                               hours_waited=draft.robot.hours_waited + float(seconds) / 3600)
-    _people_leave(draft, action)
+    _people_meanwhile(draft, action)
 
 
-def _people_leave(draft: _Draft, action: Action) -> None:
+def _people_meanwhile(draft: _Draft, action: Action) -> None:
+    """A wait's `away` people leave the home; its `asleep` people fall asleep."""
     away = action.params.get("away")
     for person in str(away).split(",") if away else ():
         if person in draft.people:
