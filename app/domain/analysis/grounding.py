@@ -82,7 +82,9 @@ class Grounder(ThingGrounding):
         self._last_animal: tuple[str, int] | None = None
         self._request = request
         self._user_id: str | None = None
-        self._names = {p.id: words_of(p.id, p.name, p.role) for p in self.people.values()}
+        variants = lexicon.person_variants
+        self._names = {p.id: set().union(*(variants.get(w, {w}) for w in words_of(
+            p.id, p.name, p.role))) for p in self.people.values()}
 
     # The scene with what grounding added.
     def scene(self) -> WorldState:

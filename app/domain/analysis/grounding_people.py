@@ -124,7 +124,7 @@ class PeopleGrounding:
             matches = [pid for pid, names in self._names.items() if phrase.head in names
                        or singular(phrase.head) in names]
         if not matches and len(phrase.modifiers) == 1 and phrase.modifiers[0] in \
-                self.lexicon.people:
+                self.lexicon.people and len(phrase.text.split()) == 2:
             # "uncle Ray" when the scene lists an uncle by no name: the uncle
             matches = [pid for pid, names in self._names.items() if phrase.modifiers[0] in names]
         if not matches:

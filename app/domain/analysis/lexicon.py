@@ -90,6 +90,8 @@ class Lexicon:
     people: dict[str, PersonWord]
     states: dict[str, str] = field(default_factory=dict)
     """person state word ("asleep", "wheelchair") -> the kind of vulnerability it names."""
+    person_variants: dict[str, frozenset[str]] = field(default_factory=dict)
+    """family word -> every word for the same relation ("auntie" -> aunt, auntie, aunty)."""
 
     def schemas_of(self, phrase: str) -> tuple[str, ...]:
         """The schemas a verb phrase (lemma, with its particle if any) may name."""
@@ -191,4 +193,6 @@ def load_lexicon() -> Lexicon:
         rooms=rooms,
         people=people,
         states=states,
+        person_variants={word: frozenset(group) for group in people_table()["variants"]
+                         for word in group},
     )

@@ -399,6 +399,13 @@ class Reader:
                 parts.append(([], "step", None))  # ", it's all sticky": a statement
                 index += 1
                 continue
+            if word == "by" and parts[-1][0] and words[index + 1: index + 2] and words[
+                    index + 1].endswith("ing") and self.lexicon.is_verb(
+                    self.lexicon.lemma(words[index + 1])):
+                # "wake him by banging two pans": how, which is a step of its own
+                parts.append(([self.lexicon.lemma(words[index + 1])], "step", None))
+                index += 2
+                continue
             opener = self._opener(words, index, bool(parts[-1][0]))
             if opener is not None:
                 kind, length = opener
@@ -643,9 +650,12 @@ class Reader:
             verb, object_words = "photograph", rest[1:] if rest[:1] == ["of"] else rest
             chunks[0] = ("", object_words)
         if verb == "give":
-            rewritten = self._action_noun(object_words)
+            sprayed = _sprayed_with(object_words)
+            rewritten = sprayed or self._action_noun(object_words)
             if rewritten is not None:
-                verb, object_words = rewritten
+                verb, object_words = rewritten[:2]
+            if sprayed is not None:  # "give his face a squirt of the cleaner": sprayed with it
+                chunks.insert(1, ("with", sprayed[2]))
         complement: str | None = None
         if verb in ("leave", "keep"):
             object_words, complement = _kept_state(object_words)
@@ -713,7 +723,8 @@ class Reader:
     def _action_noun(self, words: list[str]) -> tuple[str, list[str]] | None:
         """ "give the table a wipe" -> ("wipe", ["the", "table"]); "give it a stir"."""
         for index in range(1, len(words) - 1):
-            if words[index] in ("a", "an", "another", "the") and len(words) - index <= 4:
+            if words[index] in ("a", "an", "another", "the") and len(words) - index <= 4 \
+                    and words[index - 1] != "of":  # "one of the custard creams": a thing
                 pair = " ".join(words[-2:])  # "give the mower a hose down"
                 if len(words) - index > 2 and self.lexicon.schemas_of(pair):
                     return pair, words[:index]
@@ -775,6 +786,22 @@ STARTING_VERBS = frozenset({"start", "set", "get"})
 _HEATING = frozenset({"heating", "boiling", "warming", "cooking", "frying", "simmering"})
 _PROCESSES = _HEATING | frozenset({"going", "running", "filling", "preheating", "draining",
                                    "spinning"})
+
+
+def _sprayed_with(words: list[str]) -> tuple[str, list[str], list[str]] | None:
+    """ "his face a good squirt of the cleaner" -> ("spray", his face, the cleaner): a dose of
+    a spray given to something is that thing sprayed with it."""
+    if "of" not in words[2:]:
+        return None
+    of = words.index("of", 2)
+    article = next((i for i in range(of - 1, 0, -1) if words[i] in ("a", "an", "another")),
+                   None)
+    if article is None or of - article > 3 or words[of - 1] not in _SPRAY_DOSES:
+        return None
+    return "spray", words[:article], words[of + 1:]
+
+
+_SPRAY_DOSES = frozenset({"blast", "squirt", "spray", "spritz", "shot", "mist"})
 
 
 def _names_setting(chunk: list[str]) -> bool:

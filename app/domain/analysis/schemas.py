@@ -231,9 +231,12 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
                 grounded.recipient = found  # "take the tea into Gran": to her
             grounded.destination, grounded.destination_word = found, prep
     around = next((np for prep, np in clause.roles if prep in ("round", "around")), None)
-    if around is not None and recipient is None and clause.schemas[:1] in (
-            ("give",), ("fetch",)):
-        grounded.recipient = _everyone_in(g, around)  # "pass the crackers round the lounge"
+    if around is not None and recipient is None and (clause.schemas[:1] in (
+            ("give",), ("fetch",)) or (clause.verb or "").split()[:1] in (["take"], ["carry"])):
+        # "pass the crackers round the lounge", "take it round the guests": each of them
+        named = g.person(around) if _names_person(people, around) else None
+        grounded.recipient = named if named is not None and named.ids else _everyone_in(
+            g, around)
         if grounded.destination is not None and grounded.destination.phrase is around:
             grounded.destination = None
     if grounded.destination is not None and grounded.destination.ids and set(
