@@ -138,6 +138,10 @@ def _surroundings(scene: WorldState, touched: list[str]) -> list[str]:
         obj.relation == "in" or (obj.relation == "on" and True in (
             scene.value("heat_source", (obj.parent,)), scene.value("toggleable", (
                 obj.parent,)))))}  # on a burner or a device, never all over a worktop
+    # Oxygen flowing makes the whole room the hazard's reach: any flame lit anywhere in it.
+    rooms = {scene.room_of(i) for i in touched} - {None}
+    near |= {i for i in scene.objects if scene.room_of(i) in rooms and scene.value(
+        "oxygen_supply", (i,)) is True}
     return [i for i in sorted(near) if scene.entity_type(i) == "object"]
 
 

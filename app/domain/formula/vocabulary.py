@@ -74,6 +74,10 @@ _SYMBOLS: tuple[Symbol, ...] = (
     _object_flag("mains_switch", "switching the object off cuts the power to the home (fuse box, "
                  "main breaker)"),
     _object_flag("ignition", "the object makes fire (lighter, matches)"),
+    _object_flag("open_flame", "the object burns with an open flame when lit (candle, oil lamp, "
+                 "open fire)"),
+    _object_flag("oxygen_supply", "the object gives out medical oxygen (oxygen concentrator, "
+                 "cylinder), which makes anything near it burn fiercely"),
     _object_flag("exhaust", "the object burns fuel and gives off exhaust fumes when running "
                  "(a car, a generator, a petrol mower)"),
     _object_flag("flashing", "the object is a light that flashes or strobes (strobe, disco or "

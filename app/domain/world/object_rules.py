@@ -368,6 +368,8 @@ _flag_rule("safety_barrier", lambda k: k.trait("safety_barrier"))
 _flag_rule("life_support", lambda k: k.trait("life_support"))
 _flag_rule("mains_switch", lambda k: k.trait("mains_switch"))
 _flag_rule("ignition", lambda k: k.trait("ignition"))
+_flag_rule("oxygen_supply", lambda k: k.trait("oxygen_supply"))
+_flag_rule("open_flame", lambda k: k.trait("open_flame"))
 
 _FLASHING_WORDS = ("strobe", "disco", "flashing", "flash", "blinking")
 

@@ -81,6 +81,8 @@ _TRAITS: dict[str, dict[str, bool | None]] = {
         "MainSwitch": True, "BreakerPanel": True, "ElectricalPanel": True,
     },
     "ignition": {"Lighter": True, "Matches": True, "Matchbox": True},
+    "oxygen_supply": {"OxygenConcentrator": True, "OxygenCylinder": True, "OxygenTank": True},
+    "open_flame": {"Candle": True, "Fireplace": True, "OilLamp": True},
     "safety_barrier": {
         "BabyGate": True, "SafetyGate": True, "StairGate": True, "StoveGuard": True,
         "FireGuard": True, "BedRail": True, "Railing": True, "ChildLock": True,
@@ -112,14 +114,17 @@ _CONCEPT_TRAITS = {
     "mains_switch": "mains_switch", "small": "small", "personal": "valuable",
     "sentimental": "valuable", "food": "food", "metal": "metal", "heavy": "heavy",
     "ignition": "ignition", "camera": "camera", "water_source": "water_source", "toy": "toy",
-    "noisy": "noisy",
+    "noisy": "noisy", "oxygen_supply": "oxygen_supply",
+    "open_flame": "open_flame",
 }
 _RARE_TRAITS = ("walking_aid", "personal_aid", "life_support", "mains_switch", "ignition",
-                "safety_barrier", "medication", "valuable", "water_source")
+                "safety_barrier", "medication", "valuable", "water_source", "oxygen_supply",
+                "open_flame")
 _LISTED_TRAITS = frozenset({"sharp", "electrical", "toxic", "flammable", "medication",
                             "walking_aid", "personal_aid", "life_support", "mains_switch",
                             "ignition", "safety_barrier", "small",
-                            "valuable", "food", "metal", "heavy", "water_source"})
+                            "valuable", "food", "metal", "heavy", "water_source",
+                            "oxygen_supply", "open_flame"})
 _CONCEPT_FLAGS = {"heat_source": "heat_source", "fragile": "breakable", "container": "receptacle"}
 
 # Types outside AI2-THOR that requests commonly name, with the capabilities they surely have.
