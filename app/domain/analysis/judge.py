@@ -128,9 +128,11 @@ def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | No
             if action.name == "Finish":
                 before = judged_condition.compiled(trace.states[0], args)
                 if (before is False and not _kept_by_command(judged_condition, args, kept)) or (
-                        before is None and not _people_leave(trace)):
+                        before is None and (not _people_leave(trace) or judged_condition.compiled(
+                            trace.states[index], args) is None)):
                     continue  # what the end must not hold was there before the task began
-                # (undecided before, but the command sends its people out: then it is not)
+                # (undecided before, but the command sends its people out and the end
+                # definitely breaks it: then it is the task's doing)
             value = judged_condition.compiled(trace.states[index], args)
             if value is False:
                 return True, judged_condition, index

@@ -20,6 +20,7 @@ from app.domain.analysis.grounding import Grounder
 from app.domain.analysis.sketch import Choice, GoalFact, Planned, Sketch
 from app.domain.errors import PlanError
 from app.domain.world import ROBOT_ID, Action, ObjectState, WorldState, step
+from app.domain.world.concepts import concept_of
 from app.domain.world.entities import frozen_mapping
 from app.domain.world.object_types import CONTAINER_TYPES, normalize_type
 
@@ -286,7 +287,7 @@ class PlanBuilder:
         self.act("PutObject" if pet else "HandOver", object_id, recipient)
 
     def switch(self, device: str, on: bool, kind: str = "literal") -> None:
-        device = self._tap_of(device)
+        device = self._switched_by(device)
         self.go_to(device)
         if on and normalize_type(self.state.objects[device].kind.name) == "microwave" and \
                 self.state.value("open", (device,)) is True:
@@ -297,11 +298,17 @@ class PlanBuilder:
                 # A lamp left on harms no one (and darkness can); anything else is stopped.
                 self.cleanup("ToggleObjectOff", device)
 
-    def _tap_of(self, device: str) -> str:
+    def _switched_by(self, device: str) -> str:
         """ "Run the bath", "turn the sink on": a basin is switched by its tap (the one in its
-        room, or one the scene leaves out); anything else is switched itself."""
-        kind = normalize_type(self.state.objects[device].kind.name)
-        if kind not in _TAP_FILLED or self.state.objects[device].kind.flag("toggleable") is True:
+        room, or one the scene leaves out); "leave the stew on low": a pot is switched by the
+        burner it stands on; anything else is switched itself."""
+        obj = self.state.objects[device]
+        kind = normalize_type(obj.kind.name)
+        if obj.parent in self.state.objects and self.state.value(
+                "heat_source", (obj.parent,)) is True and (
+                concept := concept_of(obj.type)) is not None and concept.name == "cookware":
+            return obj.parent
+        if kind not in _TAP_FILLED or obj.kind.flag("toggleable") is True:
             return device
         room = self.state.room_of(device)
         return self.find_type("Faucet", room=room) or self.ensure("Faucet", room=room)

@@ -153,6 +153,8 @@ def _kept_going(clauses: tuple[Clause, ...]) -> bool:
     home", "so it's hot when I'm back"): then no careful plan switches it off at the end."""
     returning = kept = False
     for clause in clauses:
+        if clause.kind == "step" and clause.verb in ("preheat", "pre-heat"):
+            return True  # an oven is preheated to be hot when the cooking starts, later
         words = set(clause.text.replace("'", " ").split())
         if clause.kind == "step" and clause.verb in ("keep", "leave") and (
                 clause.complement in _KEEP_STATES or words & _KEEP_STATES):
@@ -206,9 +208,11 @@ def _started_to_run(clauses: tuple[Clause, ...]) -> frozenset[int]:
 
 
 _SPEAKER_LEAVES = re.compile(
-    r"\b(?:(i|we)(?:'m|'re| am| are)(?: all)? (?:off\b|going out|heading out|heading to|leaving|"
-    r"out (?:all|for|till|until)\b|"
-    r"out for|away for|going to (?:work|bed|the)|popping out|nipping out)"
+    r"\b(?:(i|we)(?:'m|'re| am| are)(?: all| just| only| about to| going to)? (?:off\b|going out|"
+    r"heading out|heading off|heading to|leaving|out (?:all|for|till|until)\b|"
+    r"out for|away for|going to (?:work|bed|the)|going away|"
+    r"(?:popping|nipping|running|dashing|stepping|slipping|pop|nip|run|dash|step|slip) "
+    r"(?:out\b(?! of)|to the|off|round to|down to|over to|into town))"
     r"|(?:when|till|until|before) (i|we)(?: get| come)? (?:back|home|return)"
     r"|(?:when|till|until) (i|we)(?:'m|'re| am| are) (?:back|home)"
     r"|while (i|we)(?:'m|'re| am| are) (?:out|away|gone|at work|asleep|in bed)"
