@@ -101,8 +101,11 @@ class PeopleGrounding:
         if phrase.pronoun in ("him", "her", "them", "himself", "herself"):
             gender = {"him": "male", "himself": "male", "her": "female",
                       "herself": "female"}.get(phrase.pronoun)
-            last = self.last_person.get(gender) or (self.last_person.get(None)
-                                                    if gender is None else None)
+            last = self.last_person.get(gender)
+            named = self.last_person.get(None)
+            if last is None and named is not None and (
+                    gender is None or self._gender(named) is None):
+                last = named  # "Arthur's teething, give him ...": the one just named
             if last is not None:
                 return Referent(phrase, "person", (last,))
             matches = [p for p in self.people if p != self._user_id
@@ -186,9 +189,10 @@ class PeopleGrounding:
 
     def _gender(self, person_id: str) -> str | None:
         person = self.people[person_id]
-        for word in (person.role, person.name):
-            if word:
-                info = self.lexicon.people.get(word.lower())
+        for words in (person.role, person.name):
+            # "son Alfie": the role's word for a kind of person says it
+            for word in ([words.lower(), *words.lower().split()] if words else []):
+                info = self.lexicon.people.get(word)
                 if info is not None and info.gender:
                     return info.gender
         gender = person.properties.get("gender")

@@ -206,6 +206,8 @@ class ThingGrounding(PeopleGrounding):
             return held
         if not ids:
             ids = self._narrow(self._named_in_passing(phrase), phrase)
+        if not ids:
+            ids = self._narrow(self._vessels_made_of(phrase), phrase)
         if ids:
             ids.sort()
             plural = phrase.every or phrase.head in _KINDS_OF_STUFF - {"thing", "product"} or (
@@ -231,6 +233,15 @@ class ThingGrounding(PeopleGrounding):
         if part_of is not None:
             return part_of
         return self._new_object(phrase, place=place)
+
+    def _vessels_made_of(self, phrase: NounPhrase) -> list[str]:
+        """ "The glass off the draining board" when the scene lists a cup made of glass: a
+        drinking vessel the phrase names by its material."""
+        if "drinking_vessel" not in _props_of(phrase.head or ""):
+            return []
+        material = singular(phrase.head)
+        return [o.id for o in self.objects.values() if "drinking_vessel" in _props_of(o.type)
+                and str(o.properties.get("material", "")).lower() == material]
 
     def _named_in_passing(self, phrase: NounPhrase) -> list[str]:
         """Things whose name has the phrase's noun anywhere in it, when none is named by it:
@@ -350,3 +361,8 @@ class ThingGrounding(PeopleGrounding):
         text = " ".join(phrase.modifiers)
         return next((room for room in self.rooms if normalize_type(room) and normalize_type(
             room) in normalize_type(text)), None) if text else None
+
+
+def _props_of(word: str) -> frozenset[str]:
+    concept = concept_of(word)
+    return concept.props if concept is not None else frozenset()

@@ -70,6 +70,9 @@ class Lexicon:
     object may be."""
     measures: frozenset[str]
     """Nouns of an amount ("spoonful", "ml"): "a spoonful of sugar" is sugar."""
+    portions: frozenset[str]
+    """A pour's or a pinch's worth ("a squirt", "a splash"): an amount of what follows or of
+    what the container named with it holds."""
     verbs: frozenset[str]
     fillers: tuple[tuple[str, ...], ...]
     negations: tuple[tuple[str, ...], ...]
@@ -123,11 +126,31 @@ class Lexicon:
         return (word in self.english or self.lemma(word) in self.english
                 or word.rstrip("s") in self.english or word in self.people or word.isdigit())
 
+    def is_english_form(self, word: str) -> bool:
+        """Whether the word is English or a comparative or adjective built on an English word
+        ("nicer", "jammy"); only for remarks, as "Penny" must stay a name for the grounder."""
+        return self.is_english(word) or any(base in self.english for base in _bases(word))
+
     def is_thing(self, word: str) -> bool:
         """Whether the noun (singular or plural, possessive stripped) names a physical thing."""
         word = word.split("'")[0].split("-")[-1]
         return word in self.things or (word.endswith("s") and (
             word[:-1] in self.things or (word.endswith("es") and word[:-2] in self.things)))
+
+
+def _bases(word: str) -> list[str]:
+    """What a comparative or an adjective made from a noun is built on: "nicer" and "nicest"
+    on nice, "bigger" on big, "tidier" on tidy, "jammy" on jam, "oniony" on onion."""
+    bases: list[str] = []
+    for ending in ("est", "er", "y"):
+        if len(word) > len(ending) + 2 and word.endswith(ending):
+            stem = word[: -len(ending)]
+            bases += [stem, stem + "e"]
+            if len(stem) > 2 and stem[-1] == stem[-2]:
+                bases.append(stem[:-1])  # bigger, jammy
+            if ending != "y" and stem.endswith("i"):
+                bases.append(stem[:-1] + "y")  # tidier, happiest
+    return bases
 
 
 def _phrases(items: list[str]) -> tuple[tuple[str, ...], ...]:
@@ -174,8 +197,10 @@ def load_lexicon() -> Lexicon:
         verb_starts=frozenset(k.split()[0] for k in schemas),
         english=frozenset(english["words"]) | frozenset(english["inflections"])
         | frozenset(words["function_words"]),
-        things=frozenset(nouns["nouns"]) | frozenset(nouns["measures"]),
-        measures=frozenset(nouns["measures"]),
+        things=frozenset(nouns["nouns"]) | frozenset(nouns["measures"])
+        | frozenset(words["portions"]),
+        measures=frozenset(nouns["measures"]) | frozenset(words["portions"]),
+        portions=frozenset(words["portions"]),
         verbs=frozenset(english["verbs"]) | frozenset(k for k in schemas if " " not in k),
         fillers=_phrases(words["fillers"]),
         negations=_phrases(words["negations"]),

@@ -34,6 +34,9 @@ def scene_names(command: str, state: WorldState, lexicon: Lexicon) -> SceneNames
               for n in (o.name, o.properties.get("name")) if n
               and state.value("animal", (o.id,)) is True}  # "give Biscuit the ..."
     proper = proper_names(command)
+    # "Mia's doing her scrapbook": a word no dictionary lists, opening a sentence with its 's
+    proper |= {w for m in _OPENING_NAME.finditer(command.strip())
+               if not lexicon.is_english(w := m.group(1).lower())}
     # "son Sam": a capitalised word of a person's role or name is their name on its own too
     names |= {w for p in state.people.values() for n in (p.name, p.role) if n
               for w in n.lower().split() if w in proper}
@@ -56,6 +59,9 @@ def scene_names(command: str, state: WorldState, lexicon: Lexicon) -> SceneNames
 
 
 _PROPER = re.compile(r"(?<![.!?:;\n]\s)(?<![.!?:;\n\d])(?<!^)\b([A-Z][a-z]+)(?:'s)?\b")
+
+
+_OPENING_NAME = re.compile(r"(?:^|[.!?;:\n]\s*)([A-Z][a-z]+)'s\b")
 
 
 def proper_names(command: str) -> set[str]:

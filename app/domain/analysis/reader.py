@@ -623,6 +623,11 @@ class Reader:
         chunks: list[tuple[str, list[str]]] = [("", [])]
         index = 0
         while index < len(words):
+            if words[index] in _INTENSIFIERS and _match(words, index + 1, lexicon.prepositions) \
+                    and words[index + 1] != "to" and not (index and words[index - 1] in
+                                                          _DETERMINERS):
+                index += 1  # "stick right behind her": behind her ("right to the top" is full)
+                continue
             length = _match(words, index, lexicon.prepositions)
             if length == 1 and index and words[index - 1] in ("the", "a", "an") and \
                     index + 1 < len(words) and words[index + 1] not in _DETERMINERS:
@@ -769,6 +774,7 @@ class Reader:
 
 _DETERMINERS = frozenset({"a", "an", "the", "some", "his", "her", "their", "my", "this", "that",
                           "those", "these", "two", "one"})
+_INTENSIFIERS = frozenset({"right", "just", "straight", "directly", "smack", "bang"})
 _WHEN = frozenset({"tonight", "overnight", "today", "tomorrow", "all", "till", "until", "for",
                    "while", "when", "after", "before", "then", "now"})
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from app.domain.analysis.grounding import Grounder
+from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.phrases import BODY_PARTS, TIME_UNITS, NounPhrase
 from app.domain.analysis.reader import Clause
 from app.domain.analysis.referents import Referent
@@ -187,7 +188,7 @@ def ground_clause(builder: PlanBuilder, clause: Clause, index: int) -> Grounded:
             _names_room(g, clause.roles[places[-1]][1]) and \
             not _names_room(g, clause.roles[places[-2]][1]):
         places.pop()  # "beside the heater in the garage": the garage says which heater
-    if len(places) > 1 and clause.roles[places[-2]][0] in _INTO and \
+    if len(places) > 1 and clause.roles[places[-2]][0] in _INTO | {"to"} and \
             clause.roles[places[-1]][0] in _STATIC_PLACE:
         places.pop()  # "into the plant pot on the TV stand": the stand says which pot
     if len(places) > 1 and clause.roles[places[-1]][0] in _BESIDE and \
@@ -348,7 +349,7 @@ def _contents_of_containers(g: Grounder, grounded: Grounded, clause: Clause) -> 
     if holder is grounded.destination and clause.schemas[:1] == ("put",):
         return  # "put the cleaning stuff in the fridge": it goes in, it is not what is there
     for index, ref in enumerate(grounded.objects):
-        if ref.new and ref.kind == "object" and (_could_be_contents(ref.phrase) or (
+        if ref.new and ref.kind == "object" and (_could_be_contents(ref.phrase, g.lexicon) or (
                 ref.phrase.quantity is not None and _portable(g, holder))):
             # Out of one of two bowls: which one is the question, never a made-up thing.
             grounded.objects[index] = Referent(ref.phrase, "object", holder.ids,
@@ -373,14 +374,14 @@ _CONTENTS_WORDS = frozenset({"leftovers", "leftover", "stuff", "contents", "rest
                              "spoonful", "scoop", "piece", "nibble", "titbit", "tidbit"})
 
 
-def _could_be_contents(phrase: NounPhrase) -> bool:
+def _could_be_contents(phrase: NounPhrase, lexicon: Lexicon) -> bool:
     """Whether a phrase can name what a container holds ("the pills", "the leftovers"), not
     a container of its own ("the water glass")."""
     head = singular(phrase.head) if phrase.head else ""
     concept = concept_of(phrase.phrase)
     if concept is not None and "container" in concept.props:
         return False
-    return head in _CONTENTS_WORDS or any(
+    return head in _CONTENTS_WORDS or head in lexicon.portions or any(
         substance_trait(head, trait) for trait in ("food", "liquid", "medication", "toxic"))
 
 

@@ -285,7 +285,7 @@ def _remark(clause: Clause, lexicon: Lexicon, names: set[str]) -> bool:
              if w.isalpha()]
     if {w.lower() for w in words} & lexicon.health_words:
         return False
-    return all(lexicon.is_english(w) or w in names for w in words) and not harm_stated(
+    return all(lexicon.is_english_form(w) or w in names for w in words) and not harm_stated(
         clause.text, lexicon)
 
 

@@ -23,7 +23,8 @@ _SUBSTANCES: dict[str, frozenset[str]] = {
         ("milk cream yogurt", "liquid food allergen"),
         ("oil cooking_oil olive_oil vegetable_oil", "liquid food flammable"),
         ("bleach ammonia detergent dish_soap soap cleaner disinfectant drain_cleaner antifreeze "
-         "pesticide acid lye shampoo window_cleaner", "liquid toxic"),
+         "pesticide acid lye shampoo window_cleaner descaler degreaser unblocker remover "
+         "solvent sanitiser sanitizer caustic softener", "liquid toxic"),
         # Products named for what they kill or keep away ("ant killer", "slug pellets").
         ("killer weedkiller insecticide herbicide repellent rodenticide poison pellets "
          "fungicide", "toxic"),
