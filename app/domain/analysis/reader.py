@@ -151,7 +151,8 @@ def _assured(words: list[str]) -> list[str]:
 
 
 _SETTINGS = frozenset({"high", "low", "medium", "full", "max", "maximum", "min", "minimum",
-                       "medium-high", "medium-low", "full-whack", "simmer"})
+                       "medium-high", "medium-low", "full-whack", "simmer", "loud", "quiet",
+                       "soft", "warm", "hot", "cool"})
 
 
 def _heat_setting(verb: str, rest: list[str]) -> tuple[str, list[str]]:
@@ -811,7 +812,10 @@ _SPRAY_DOSES = frozenset({"blast", "squirt", "spray", "spritz", "shot", "mist"})
 
 
 def _names_setting(chunk: list[str]) -> bool:
-    """ "on low", "on eco", "on the quick cycle": how a machine is set, not where a thing goes."""
+    """ "on low", "on eco", "on the quick cycle", "on nice and loud": how a machine is set,
+    not where a thing goes."""
+    if chunk[:2] in (["nice", "and"], ["good", "and"]):
+        chunk = chunk[2:]  # "nice and loud": loud
     words = [w for w in chunk if w not in ("the", "a", "its", "their", ",")]
     return bool(words) and (_is_setting(chunk[0]) or (
         words[-1] in PROGRAM_NOUNS and len(words) <= 3))

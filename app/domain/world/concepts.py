@@ -34,7 +34,14 @@ class Concept:
 
     def mass_of(self, name: str) -> float | None:
         """The typical mass of a thing called `name`: its word's own, else the concept's."""
-        return self.word_mass.get(_key(name), self.mass_kg)
+        own = self.word_mass_of(name)
+        return own if own is not None else self.mass_kg
+
+    def word_mass_of(self, name: str) -> float | None:
+        """The typical mass of the word itself, when it differs from the concept's (a radio is
+        no television); "a milk carton" weighs what a carton does, whatever it holds."""
+        key = _key(name)
+        return self.word_mass.get(key, self.word_mass.get(key.split(" ")[-1] if key else ""))
 
 
 @cache

@@ -114,3 +114,18 @@ class TestWhatTheWordsSayOfTheThing:
     def test_household_chemicals_are_toxic(self) -> None:
         for product in ("descaler solution", "mould remover", "degreaser", "fabric softener"):
             assert substance_trait(product, "toxic") is True, product
+
+
+class TestASettingIsNoPlace:
+    def test_on_nice_and_loud_is_how_the_radio_is_set(self) -> None:
+        radio = {"id": "radio_1", "type": "Radio", "room": "living_room",
+                 "properties": {"on": False}}
+        steps = plan_steps("put the radio on nice and loud", home_with(radio))
+        assert ("ToggleObjectOn", "radio_1", None) in steps
+        assert not any(action == "PutObject" for action, _, _ in steps)
+
+    def test_on_the_high_shelf_is_still_a_place(self) -> None:
+        shelf = {"id": "shelf_1", "type": "Shelf", "room": "kitchen",
+                 "properties": {"height": "high"}}
+        steps = plan_steps("put the soap bar on the high shelf", home_with(shelf))
+        assert ("PutObject", "soap_1", "shelf_1") in steps
