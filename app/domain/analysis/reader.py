@@ -152,7 +152,7 @@ def _assured(words: list[str]) -> list[str]:
 
 _SETTINGS = frozenset({"high", "low", "medium", "full", "max", "maximum", "min", "minimum",
                        "medium-high", "medium-low", "full-whack", "simmer", "loud", "quiet",
-                       "soft", "warm", "hot", "cool"})
+                       "warm", "hot", "cool"})  # never "soft": "put him on soft ground"
 
 
 def _heat_setting(verb: str, rest: list[str]) -> tuple[str, list[str]]:
