@@ -1,10 +1,10 @@
 """Stage 1, the Hazard Analysis Matrix, on the world model: read, simulate, judge.
 
 In: a `GateRequest` and the active Hazard Template Library. Out: a `HazardReport`. How:
-1. Read (`reader.py`, `schemas.py`, `handlers.py`, `carrying.py`): each clause becomes steps
-   of the shared action model on the request's `WorldState`; what cannot be read (an unknown
-   verb or noun, a pronoun with nothing to point to, a goal with no task, several readings
-   that differ in safety) becomes a critical `comprehension` unknown quoting the words.
+1. Read (`reader.py`, `arguments.py`, `schemas.py`, `handlers.py`, `carrying.py`): each clause
+   becomes steps of the shared action model on the request's `WorldState`; what cannot be read
+   (an unknown verb or noun, a pronoun with nothing to point to, a goal with no task, several
+   readings that differ in safety) becomes a critical `comprehension` unknown quoting the words.
 2. Simulate (`sketch.py`, `simulate.py`): the literal plan and the variants a planner may choose.
 3. Judge (`judge.py`, `aggregate.py`): every active template on every trace; what the best
    careful variant still breaks is unpreventable, what only others break is preventable, and a

@@ -15,8 +15,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from app.domain.analysis.arguments import Clause
 from app.domain.analysis.lexicon import Lexicon
-from app.domain.analysis.reader import Clause
 from app.domain.analysis.schemas import Grounded
 
 

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from app.domain.analysis.arguments import Clause
 from app.domain.analysis.grounding import Grounder
 from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.phrases import BODY_PARTS, TIME_UNITS, NounPhrase
-from app.domain.analysis.reader import Clause
 from app.domain.analysis.referents import Referent
 from app.domain.analysis.steps import PlanBuilder
 from app.domain.world.concepts import concept_of, singular

@@ -11,8 +11,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from app.domain.analysis.arguments import Clause
 from app.domain.analysis.lexicon import Lexicon
-from app.domain.analysis.reader import Clause
 from app.domain.world.substances import substance_trait
 
 _AMOUNTS = frozenset({"one", "two", "three", "a", "an", "some", "extra", "little", "bit", "splash",

@@ -15,6 +15,7 @@ import itertools
 import re
 from dataclasses import dataclass, field, replace
 
+from app.domain.analysis.arguments import STARTING_VERBS, Clause
 from app.domain.analysis.declared import RULES, Declared, declared, harm_stated
 from app.domain.analysis.grounding import Grounder
 from app.domain.analysis.handlers import apply_clause
@@ -23,7 +24,7 @@ from app.domain.analysis.lexicon import Lexicon
 from app.domain.analysis.names import scene_names
 from app.domain.analysis.phrases import TIME_UNITS
 from app.domain.analysis.questions import not_understood, which_one
-from app.domain.analysis.reader import STARTING_VERBS, Clause, Reader, sounds_like_statement
+from app.domain.analysis.reader import Reader, sounds_like_statement
 from app.domain.analysis.schemas import Grounded, ground_clause
 from app.domain.analysis.sketch import Sketch
 from app.domain.analysis.specifications import specifications

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import pytest
 
+from app.domain.analysis.arguments import Clause
 from app.domain.analysis.lexicon import load_lexicon
-from app.domain.analysis.reader import Clause, Reader
+from app.domain.analysis.reader import Reader
 
 
 @pytest.fixture(scope="module")

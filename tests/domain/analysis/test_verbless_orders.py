@@ -9,8 +9,9 @@ from typing import Any
 
 import pytest
 
+from app.domain.analysis.arguments import Clause
 from app.domain.analysis.lexicon import load_lexicon
-from app.domain.analysis.reader import Clause, Reader
+from app.domain.analysis.reader import Reader
 from app.domain.gate import Decision, GateDecision
 from app.domain.models import GateRequest
 from tests.domain.analysis.conftest import HOME, request
