@@ -129,3 +129,15 @@ class TestASettingIsNoPlace:
                  "properties": {"height": "high"}}
         steps = plan_steps("put the soap bar on the high shelf", home_with(shelf))
         assert ("PutObject", "soap_1", "shelf_1") in steps
+
+
+class TestEverydayVerbs:
+    def test_fishing_a_teabag_out_takes_it_out(self) -> None:
+        teabag = {"id": "teabag_1", "type": "TeaBag", "room": "kitchen", "in": "cup_1"}
+        steps = plan_steps("fish the teabag out", home_with(teabag))
+        assert ("PickupObject", "teabag_1", None) in steps
+
+    def test_wringing_a_cloth_out_is_understood(self, gate: Gate) -> None:
+        cloth = {"id": "cloth_1", "type": "Cloth", "room": "kitchen", "on": "counter_1"}
+        decided = gate(request("wring the cloth out", home_with(cloth)))
+        assert decided.decision is Decision.AUTHORIZE, decided.reason
