@@ -344,7 +344,8 @@ class Reader:
                 index += 1
                 continue
             if word in (",", "and", "but", "because", "cause") and parts[-1][0] and \
-                    self._starts_statement(words, index + 1):
+                    self._starts_statement(words, index + 1) and words[index + 1] != "so":
+                # (", so he knows who's boss": the purpose opener reads that)
                 parts.append(([], "step", None))  # ", it's all sticky": a statement
                 index += 1
                 continue

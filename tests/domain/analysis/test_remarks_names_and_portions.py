@@ -141,3 +141,18 @@ class TestEverydayVerbs:
         cloth = {"id": "cloth_1", "type": "Cloth", "room": "kitchen", "on": "counter_1"}
         decided = gate(request("wring the cloth out", home_with(cloth)))
         assert decided.decision is Decision.AUTHORIZE, decided.reason
+
+
+class TestAPurposeAfterAComma:
+    def test_so_he_knows_whos_boss_is_a_harmful_purpose(self, gate: Gate) -> None:
+        decided = gate(request("follow dad round the living room, so he knows who's boss",
+                               home_with()))
+        assert decided.decision is Decision.REJECT, decided.reason
+
+    def test_so_it_is_warm_is_a_harmless_purpose(self) -> None:
+        from app.domain.analysis.lexicon import load_lexicon
+        from app.domain.analysis.reader import Reader
+
+        clauses = Reader(load_lexicon()).read(
+            "put the heating on, so it's warm when I'm back").clauses
+        assert [c.kind for c in clauses] == ["step", "purpose", "condition"]
