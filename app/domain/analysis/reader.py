@@ -555,7 +555,10 @@ class Reader:
             if word in ("and", ",") or (index and word not in lexicon.particles and match_phrase(
                     rest, index, lexicon.prepositions)):
                 break
-            if word in lexicon.particles and lexicon.schemas_of(f"{first} {word}"):
+            if word in lexicon.particles and lexicon.schemas_of(f"{first} {word}") and (
+                    index == 0 or word != "in" or lexicon.schemas_of(f"{first} {word}") != (
+                        "go",)):
+                # (a visit takes no object: "pop her in" puts her in, "pop in" visits)
                 after = rest[index + 1:]
                 if not after or after[0] in ("and", ",") or match_phrase(
                         after, 0, lexicon.prepositions) or after[0] in COMPLEMENTS or (

@@ -156,3 +156,19 @@ class TestAPurposeAfterAComma:
         clauses = Reader(load_lexicon()).read(
             "put the heating on, so it's warm when I'm back").clauses
         assert [c.kind for c in clauses] == ["step", "purpose", "condition"]
+
+
+class TestAVisitTakesNoObject:
+    def test_pop_her_in_puts_her_in(self) -> None:
+        from app.domain.analysis.lexicon import load_lexicon
+        from app.domain.analysis.reader import Reader
+
+        clause = Reader(load_lexicon()).read("pop her in with her duck").clauses[0]
+        assert clause.verb == "pop" and clause.schemas[:1] == ("put",)
+
+    def test_pop_in_alone_is_a_visit(self) -> None:
+        from app.domain.analysis.lexicon import load_lexicon
+        from app.domain.analysis.reader import Reader
+
+        clause = Reader(load_lexicon()).read("pop in on gran").clauses[0]
+        assert clause.verb == "pop in" and clause.schemas == ("go",)
