@@ -125,15 +125,14 @@ def _check_guards(judged: JudgedTemplate, trace: Trace, args: dict[str, str | No
         action = planned.action
         args["object"], args["target"] = action.object, action.target
         for judged_condition in conditions:
+            value = judged_condition.compiled(trace.states[index], args)
             if action.name == "Finish":
                 before = judged_condition.compiled(trace.states[0], args)
                 if (before is False and not _kept_by_command(judged_condition, args, kept)) or (
-                        before is None and (not _people_leave(trace) or judged_condition.compiled(
-                            trace.states[index], args) is None)):
+                        before is None and (not _people_leave(trace) or value is None)):
                     continue  # what the end must not hold was there before the task began
                 # (undecided before, but the command sends its people out and the end
                 # definitely breaks it: then it is the task's doing)
-            value = judged_condition.compiled(trace.states[index], args)
             if value is False:
                 return True, judged_condition, index
             if value is None and worst is None:

@@ -32,11 +32,6 @@ class Concept:
     word_mass: Mapping[str, float] = field(default_factory=dict, compare=False)
     """Typical masses of words that differ from the concept's (a cane is no wheelchair)."""
 
-    def mass_of(self, name: str) -> float | None:
-        """The typical mass of a thing called `name`: its word's own, else the concept's."""
-        own = self.word_mass_of(name)
-        return own if own is not None else self.mass_kg
-
     def word_mass_of(self, name: str) -> float | None:
         """The typical mass of the word itself, when it differs from the concept's (a radio is
         no television); "a milk carton" weighs what a carton does, whatever it holds."""

@@ -355,9 +355,11 @@ def _from_concept(name: str, concept: Concept, table: dict[str, TypeInfo]) -> Ty
     flags.setdefault("toggleable", powered)
     flags.setdefault("heat_source", "heat_source" in concept.props)
     mass = base.mass_kg if base else None
-    typical = concept.mass_of(name)
-    if typical is not None and (mass is None or concept.word_mass_of(name) is not None):
-        mass = (float(typical), float(typical))  # the concept's (or its word's) typical mass
+    word_mass = concept.word_mass_of(name)  # a radio is no television, whatever TVs weigh
+    if word_mass is not None:
+        mass = (word_mass, word_mass)
+    elif mass is None and concept.mass_kg is not None:
+        mass = (float(concept.mass_kg), float(concept.mass_kg))  # the concept's typical mass
     # "the top step" is the Stairs: a concept of one type names instances by that type
     named = base.name if base else (concept.types[0] if len(concept.types) == 1 else name)
     return TypeInfo(
